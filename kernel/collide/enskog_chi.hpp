@@ -1,0 +1,15 @@
+#pragma once
+// Pair correlation at contact chi_ij of a hard-sphere mixture, Carnahan-Starling form (000 eq. 3,
+// Boublik-Mansoori-Carnahan-Starling-Leland). In a homogeneous state chi_ij only rescales the
+// collision rate of the pair i-j (000 eq. 2).
+#include <vector>
+
+namespace granmc {
+
+/// chi_ij for a mixture with packing fraction phi, mole fractions x_k and diameters sigma_k.
+/// The packing fraction fixes the density scale: hat-phi = (pi n / 6) sum_k x_k sigma_k^2 is taken as
+/// phi * sum_k x_k sigma_k^2 / sum_k x_k sigma_k^3, so that phi = (pi n / 6) sum_k x_k sigma_k^3.
+/// Monodisperse: chi = (1 - phi/2) / (1 - phi)^3.
+double enskog_chi(double phi, const std::vector<double>& x, const std::vector<double>& sigma, int i, int j);
+
+}  // namespace granmc

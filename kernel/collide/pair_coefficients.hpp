@@ -1,0 +1,23 @@
+#pragma once
+// Constants of one ordered species pair (i, j) in the collision stage of 000 sec. 3.
+#include <cstdint>
+#include <vector>
+
+#include "kernel/core/scene.hpp"
+
+namespace granmc {
+
+struct PairCoefficients {
+  int i = 0, j = 0;              // species of particle k and of particle l
+  std::uint16_t rng_sub = 0;     // random-stream sub-identifier of the pair
+  double rate_prefactor = 0.0;   // 4 pi sigma_ij^2 n_j chi_ij (000 sec. 3): omega_kl / |g.sigma|
+  double mu_ji = 0.0;            // m_j / (m_i + m_j), moves particle k (000 eq. 14)
+  double mu_ij = 0.0;            // m_i / (m_i + m_j), moves particle l (000 eq. 15)
+  double one_plus_alpha = 2.0;   // 1 + alpha_ij
+  double energy_loss = 0.0;      // (1 - alpha_ij^2) m_i m_j / (2 (m_i + m_j)): loss / (g.sigma)^2
+};
+
+/// The ordered pairs (i, j) of the scene's species, both orders as 000 sec. 3 does.
+std::vector<PairCoefficients> pair_coefficients(const Scene& scene);
+
+}  // namespace granmc

@@ -1,0 +1,61 @@
+#pragma once
+// Fixed-size, cache-line-aligned buffer of trivially copyable values. Large buffers are aligned to
+// 2 MiB and advised for transparent huge pages: random pair access over 10^7 particles is bound by
+// TLB and cache misses (docs/performance.md).
+#include <cstddef>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <span>
+#include <type_traits>
+#include <utility>
+
+#include <sys/mman.h>
+
+namespace granmc {
+
+template <class T>
+class AlignedBuffer {
+  static_assert(std::is_trivially_copyable_v<T>, "AlignedBuffer holds plain values");
+
+ public:
+  static constexpr std::size_t cache_line = 64;
+  static constexpr std::size_t huge_page = std::size_t{2} << 20;
+
+  AlignedBuffer() = default;
+  explicit AlignedBuffer(std::size_t n) : size_(n) {
+    if (n == 0) return;
+    const std::size_t bytes = n * sizeof(T);
+    const std::size_t align = bytes >= huge_page ? huge_page : cache_line;
+    const std::size_t rounded = (bytes + align - 1) / align * align;
+    data_ = static_cast<T*>(std::aligned_alloc(align, rounded));
+    if (data_ == nullptr) throw std::bad_alloc();
+    if (align == huge_page) madvise(data_, rounded, MADV_HUGEPAGE);  // advice only; failure is harmless
+    std::memset(static_cast<void*>(data_), 0, rounded);
+  }
+  AlignedBuffer(const AlignedBuffer& o) : AlignedBuffer(o.size_) {
+    if (size_ != 0) std::memcpy(static_cast<void*>(data_), o.data_, size_ * sizeof(T));
+  }
+  AlignedBuffer(AlignedBuffer&& o) noexcept
+      : data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)) {}
+  AlignedBuffer& operator=(AlignedBuffer o) noexcept {
+    std::swap(data_, o.data_);
+    std::swap(size_, o.size_);
+    return *this;
+  }
+  ~AlignedBuffer() { std::free(data_); }
+
+  [[nodiscard]] std::size_t size() const noexcept { return size_; }
+  T& operator[](std::size_t i) noexcept { return data_[i]; }
+  const T& operator[](std::size_t i) const noexcept { return data_[i]; }
+  T* data() noexcept { return data_; }
+  const T* data() const noexcept { return data_; }
+  std::span<T> span() noexcept { return {data_, size_}; }
+  std::span<const T> span() const noexcept { return {data_, size_}; }
+
+ private:
+  T* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
+}  // namespace granmc

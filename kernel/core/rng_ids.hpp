@@ -1,0 +1,15 @@
+#pragma once
+// Every purpose a random number is drawn for, in one place (HOOMD's RNGIdentifiers.h). A Philox block
+// is addressed by key = (seed, replica) and counter = (index, step, purpose, sub), never by the thread
+// that draws it, so results do not depend on the thread count. Add new purposes at the end: changing a
+// value changes every result drawn with it.
+#include <cstdint>
+
+namespace granmc {
+
+enum class RngPurpose : std::uint16_t {
+  initial_velocity = 1,  // sub = species, step = 0, index = particle
+  collision_pair = 2,    // sub = species pair i * 16 + j, step = time step, index = block of a candidate
+};
+
+}  // namespace granmc

@@ -1,0 +1,43 @@
+#pragma once
+// Exact conversions of random words into the variates the schemes need.
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+#include "kernel/core/vec3.hpp"
+
+namespace granmc {
+
+/// Uniform on (0, 1) from 32 random bits: (w + 1/2) 2^-32, never 0 or 1.
+constexpr double uniform_open(std::uint32_t w) noexcept { return (static_cast<double>(w) + 0.5) * 0x1p-32; }
+
+/// Uniform on (0, 1) with 53-bit resolution from two words.
+constexpr double uniform_open53(std::uint32_t hi, std::uint32_t lo) noexcept {
+  const std::uint64_t bits = ((static_cast<std::uint64_t>(hi) << 32) | lo) >> 11;
+  return (static_cast<double>(bits) + 0.5) * 0x1p-53;
+}
+
+/// Index uniform on {0, ..., n-1} from 64 random bits (multiply-high; the bias is below n / 2^64).
+constexpr std::uint64_t uniform_index(std::uint32_t hi, std::uint32_t lo, std::uint64_t n) noexcept {
+  __extension__ using uint128 = unsigned __int128;
+  const std::uint64_t bits = (static_cast<std::uint64_t>(hi) << 32) | lo;
+  return static_cast<std::uint64_t>((static_cast<uint128>(bits) * n) >> 64);
+}
+
+/// Direction uniform on the unit sphere from two uniforms (Archimedes: cos(theta) is uniform).
+inline Vec3 unit_vector(double u1, double u2) noexcept {
+  const double cos_theta = 2.0 * u1 - 1.0;
+  const double sin_theta = std::sqrt(std::fma(-cos_theta, cos_theta, 1.0));
+  const double phi = 2.0 * std::numbers::pi * u2;
+  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+
+/// Two independent standard normals from two uniforms on (0, 1) (Box-Muller).
+inline void standard_normal_pair(double u1, double u2, double& z1, double& z2) noexcept {
+  const double r = std::sqrt(-2.0 * std::log(u1));
+  const double phi = 2.0 * std::numbers::pi * u2;
+  z1 = r * std::cos(phi);
+  z2 = r * std::sin(phi);
+}
+
+}  // namespace granmc

@@ -1,0 +1,103 @@
+#pragma once
+// Scene: what to simulate, as a plain, validated, immutable value. io/scene_file.cpp builds it from a
+// TOML file (the contract of SCENES.md, documented in docs/scenes.md) and is the only place that checks
+// it; everything downstream may assume the invariants stated beside each member.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace granmc {
+
+enum class Method { dsmc, event, gillespie };
+enum class CollisionKernel { hard_sphere, maxwell, vhs };
+enum class ThermostatKind { none, gaussian, white_noise };
+enum class BathKind { gaussian, power_law };
+/// How the time step follows the state: fixed, or a fixed fraction of the mean free time, i.e.
+/// dt_k = dt * u(0) / u(t_k) with u the current thermal velocity scale (000 sec. 3: "the value of
+/// dt must be conveniently updated"), so a cooling run costs the same per decade of temperature.
+enum class DtScaling { fixed, thermal };
+/// Where the observations fall: t_k = k t_end / samples, or geometrically from dt to t_end.
+enum class SampleSpacing { linear, log };
+
+struct RunConfig {
+  Method method = Method::dsmc;
+  std::uint64_t seed = 1;
+  int replicas = 1;             // > 0
+  double t_end = 0.0;           // > 0, scene time units
+  double dt = 0.0;              // > 0 for dsmc (initial step when dt_scaling = thermal)
+  int samples = 100;            // > 0; observations at samples + 1 times including t = 0
+  DtScaling dt_scaling = DtScaling::fixed;
+  SampleSpacing sample_spacing = SampleSpacing::linear;
+};
+
+struct SpeciesConfig {
+  std::string name;
+  double mass = 1.0;            // > 0
+  double diameter = 1.0;        // > 0, sigma_i
+  double density = 1.0;         // > 0, number density n_i
+  std::int64_t particles = 0;   // > 0, simulated particles N_i (N_1/N_2 = n_1/n_2 to 1%)
+};
+
+struct CollisionConfig {
+  CollisionKernel kernel = CollisionKernel::hard_sphere;
+  double lambda = 1.0;          // VHS exponent in [0, 1]
+  double rate = 0.0;            // >= 0; Gamba form (001) when > 0
+  std::array<std::array<double, 2>, 2> restitution{{{1.0, 1.0}, {1.0, 1.0}}};  // alpha_ij in [0, 1], symmetric
+  double packing_fraction = 0.0;  // in [0, 1); > 0 switches on Enskog chi_ij (000 eq. 3)
+};
+
+struct ThermostatConfig {
+  ThermostatKind kind = ThermostatKind::none;
+  bool zeta_is_cooling_rate = true;  // gaussian: compensate the instantaneous cooling rate
+  double zeta = 0.0;                 // gaussian with a fixed rate (1/time)
+  double beta = 0.0;                 // white noise: dv = sqrt(2 beta) dW, >= 0
+};
+
+struct IntruderConfig {
+  int dimension = 1;            // 1 or 2
+  double mass = 1.0;            // > 0, M (bath particle mass 1)
+  double restitution = 1.0;     // in [0, 1]
+  BathKind bath = BathKind::gaussian;
+  double bath_a = 1.0;          // > 0
+  double bath_density = 1.0;    // > 0
+  double length = 1.0;          // > 0, needle length L
+  double inertia = 0.0;         // >= 0; 0 means M L^2 / 12
+};
+
+struct HistogramConfig {
+  int shells = 128;             // > 0
+  double radius = 16.0;         // > 0
+};
+
+struct Scene {
+  RunConfig run;
+  std::vector<SpeciesConfig> species;  // 1 or 2 for gas scenes, empty for an intruder scene
+  CollisionConfig collision;
+  ThermostatConfig thermostat;
+  double shear_rate = 0.0;             // a of u_x = a y (000 sec. 2)
+  bool relaxation = false;             // BGK-like relaxation to the HCS (003)
+  double initial_temperature = 1.0;    // > 0, finite
+  std::optional<IntruderConfig> intruder;
+  HistogramConfig histogram;
+
+  std::string source_path;             // where the scene came from (for messages and output)
+  std::string source_text;             // the file's text, stored with the results
+};
+
+/// Total simulated particles over all species.
+inline std::int64_t total_particles(const Scene& s) {
+  std::int64_t n = 0;
+  for (const auto& sp : s.species) n += sp.particles;
+  return n;
+}
+
+/// Total number density n = sum_i n_i.
+inline double total_density(const Scene& s) {
+  double n = 0.0;
+  for (const auto& sp : s.species) n += sp.density;
+  return n;
+}
+
+}  // namespace granmc

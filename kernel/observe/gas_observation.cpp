@@ -1,0 +1,47 @@
+#include "kernel/observe/gas_observation.hpp"
+
+#include <cmath>
+
+
+namespace granmc {
+
+std::vector<SpeciesMoments> gas_moments(const GasState& state) {
+  std::vector<SpeciesMoments> m;
+  for (const SpeciesStore& s : state.species) m.push_back(species_moments(s));
+  return m;
+}
+
+GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& moments) noexcept {
+  GasTotals t;
+  for (std::size_t i = 0; i < moments.size(); ++i) {
+    const double m = scene.species[i].mass;
+    t.mass += m * static_cast<double>(moments[i].particles);
+    t.twice_energy += m * moments[i].sum_c2;
+    t.momentum += m * moments[i].sum_c;
+  }
+  return t;
+}
+
+void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series) {
+  const double n = total_density(scene);
+  const std::vector<SpeciesMoments> moments = gas_moments(state);
+  double theta_mix = 0.0;  // sum_i x_i m_i <c^2> / 3, the mixture temperature in stored units
+  for (std::size_t i = 0; i < moments.size(); ++i) {
+    const SpeciesConfig& sp = scene.species[i];
+    const double theta = sp.mass * moments[i].mean_c2() / 3.0;
+    const double log_t = state.scale.log_temperature(theta);
+    SpeciesSeries& s = series.species[i];
+    s.temperature.push_back(std::exp(log_t));
+    s.log_temperature.push_back(log_t);
+    s.a2.push_back(moments[i].a2());
+    theta_mix += sp.density / n * theta;
+  }
+  const GasTotals totals = gas_totals(scene, moments);
+  const double log_t = state.scale.log_temperature(theta_mix);
+  series.temperature.push_back(std::exp(log_t));
+  series.log_temperature.push_back(log_t);
+  series.momentum.push_back(state.scale.u() * totals.momentum);
+  series.momentum_relative.push_back(norm(totals.momentum) / std::sqrt(totals.mass * totals.twice_energy));
+}
+
+}  // namespace granmc

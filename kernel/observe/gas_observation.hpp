@@ -1,0 +1,26 @@
+#pragma once
+// Observes a gas replica at a sample time: partial and mixture temperatures, a2, total momentum.
+#include <vector>
+
+#include "kernel/core/scene.hpp"
+#include "kernel/observe/moments.hpp"
+#include "kernel/observe/gas_series.hpp"
+#include "kernel/schemes/gas_state.hpp"
+
+namespace granmc {
+
+/// Appends one observation of `state` to `series` (series.species must have one entry per species).
+void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series);
+
+/// The moments of every species of `state`, in species order.
+std::vector<SpeciesMoments> gas_moments(const GasState& state);
+
+/// Mass-weighted sums over all species in stored units, used to observe and to rescale.
+struct GasTotals {
+  double mass = 0.0;          // sum_i m_i N_i
+  double twice_energy = 0.0;  // sum_i m_i sum_k |c_k|^2
+  Vec3 momentum;              // sum_i m_i sum_k c_k
+};
+GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& moments) noexcept;
+
+}  // namespace granmc

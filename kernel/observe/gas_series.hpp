@@ -1,0 +1,37 @@
+#pragma once
+// What a gas replica records at each sample time, and the run's results over all replicas.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernel/core/vec3.hpp"
+
+namespace granmc {
+
+struct SpeciesSeries {
+  std::vector<double> temperature;      // T_i = m_i <V^2> / 3 (energy units)
+  std::vector<double> log_temperature;  // ln T_i, finite where T_i underflows
+  std::vector<double> a2;               // (3/5) <V^4> / <V^2>^2 - 1
+};
+
+struct ReplicaSeries {
+  std::vector<double> temperature;         // mixture T = sum_i x_i T_i
+  std::vector<double> log_temperature;     // ln T
+  std::vector<SpeciesSeries> species;
+  std::vector<Vec3> momentum;              // total momentum sum_i m_i sum_k V_k (scene units)
+  std::vector<double> momentum_relative;   // |P| / sqrt(M_total 2 E_kin): centre-of-mass speed / rms speed
+  std::vector<double> collisions;          // accepted collisions since t = 0, at each sample
+  std::uint64_t candidates = 0;            // candidate pairs tested
+  std::uint64_t majorant_updates = 0;      // times omega_max was raised (000 sec. 3)
+  std::uint64_t rescales = 0;              // velocity rescalings (long cooling runs)
+  double momentum_removed_relative = 0.0;  // sum over rescalings of the removed |P| / sqrt(M 2 E)
+};
+
+struct RunResult {
+  std::vector<double> times;               // sample times
+  std::vector<std::string> species_names;
+  std::vector<ReplicaSeries> replicas;     // in replica order
+  int threads = 1;
+};
+
+}  // namespace granmc

@@ -1,0 +1,25 @@
+#include "kernel/observe/moments.hpp"
+
+#include "kernel/observe/compensated_sum.hpp"
+
+namespace granmc {
+
+SpeciesMoments species_moments(const SpeciesStore& store) noexcept {
+  CompensatedSum s2, s4, px, py, pz;
+  store.for_each_velocity([&](const Vec3& c) {
+    const double c2 = norm2(c);
+    s2.add(c2);
+    s4.add(c2 * c2);
+    px.add(c.x);
+    py.add(c.y);
+    pz.add(c.z);
+  });
+  SpeciesMoments m;
+  m.particles = store.size();
+  m.sum_c2 = s2.value();
+  m.sum_c4 = s4.value();
+  m.sum_c = {px.value(), py.value(), pz.value()};
+  return m;
+}
+
+}  // namespace granmc

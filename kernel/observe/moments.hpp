@@ -1,0 +1,27 @@
+#pragma once
+// Velocity moments of one species, in stored (scaled) units, with compensated sums.
+#include <cstddef>
+
+#include "kernel/core/species_store.hpp"
+#include "kernel/core/vec3.hpp"
+
+namespace granmc {
+
+struct SpeciesMoments {
+  std::size_t particles = 0;
+  double sum_c2 = 0.0;  // sum_k |c_k|^2
+  double sum_c4 = 0.0;  // sum_k |c_k|^4
+  Vec3 sum_c;           // sum_k c_k
+
+  /// <c^2>
+  [[nodiscard]] double mean_c2() const noexcept { return sum_c2 / static_cast<double>(particles); }
+  /// Kurtosis cumulant a2 = (3/5) <c^4> / <c^2>^2 - 1 (zero for a Maxwellian; c_i = 2 a2, 000 Fig. 1).
+  [[nodiscard]] double a2() const noexcept {
+    const double m2 = mean_c2();
+    return 0.6 * (sum_c4 / static_cast<double>(particles)) / (m2 * m2) - 1.0;
+  }
+};
+
+SpeciesMoments species_moments(const SpeciesStore& store) noexcept;
+
+}  // namespace granmc

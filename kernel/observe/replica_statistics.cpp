@@ -1,0 +1,22 @@
+#include "kernel/observe/replica_statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/observe/compensated_sum.hpp"
+
+namespace granmc {
+
+MeanCI replica_mean(std::span<const double> values) noexcept {
+  const double n = static_cast<double>(values.size());
+  if (values.empty()) return {};
+  CompensatedSum s1;
+  for (double v : values) s1.add(v);
+  const double mean = s1.value() / n;
+  CompensatedSum s2;  // centred second moment: eta_2 - eta_1^2 without cancellation
+  for (double v : values) s2.add((v - mean) * (v - mean));
+  const double variance = std::max(0.0, s2.value() / n);
+  return {mean, confidence_lambda_p * std::sqrt(variance / n)};  // 001 eq. (31)
+}
+
+}  // namespace granmc

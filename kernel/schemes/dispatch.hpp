@@ -1,0 +1,20 @@
+#pragma once
+// The one place that maps a validated scene to the kernel instantiation that runs it.
+#include <string>
+
+#include "kernel/core/scene.hpp"
+#include "kernel/observe/gas_series.hpp"
+#include "kernel/schemes/run_options.hpp"
+
+namespace granmc {
+
+/// Empty if granmc can run the scene; otherwise why not, and what is supported.
+std::string unsupported_reason(const Scene& scene);
+
+/// Runs the scene (precondition: unsupported_reason(scene) is empty).
+RunResult run_scene(const Scene& scene, const RunOptions& options);
+
+/// A one-line name of the instantiation chosen for the scene, e.g. "dsmc<hard-sphere>".
+std::string instantiation_name(const Scene& scene);
+
+}  // namespace granmc

@@ -1,0 +1,166 @@
+#pragma once
+// Time-stepped ESMC/DSMC for a spatially homogeneous gas (000 sec. 3), one replica.
+//
+// A step of length dt runs the free-flight effects the scene named, then the collision stage for every
+// ordered species pair (i, j) with 1/2 N_i omega_max^(ij) dt candidates (the fractional part carried to
+// the next step), then the post-collision effects. `Kernel` is the collision-rate evaluator
+// (collide/), `Effects` the evaluator structs of effects/: each has `static constexpr StepPhase phase`
+// and `void apply(GasState&, const StepContext&) noexcept`; an effect the scene does not name is not in
+// the pack and costs nothing. One file, schemes/dispatch.cpp, chooses the instantiation.
+//
+// Long cooling runs never underflow: the stored velocities are rescaled to unit temperature (and the
+// centre-of-mass velocity removed) whenever the stored energy has drifted by a factor
+// `rescale_factor`, with the scale kept as log u (core/velocity_scale.hpp).
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+#include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/core/philox_stream.hpp"
+#include "kernel/core/scene.hpp"
+#include "kernel/observe/gas_observation.hpp"
+#include "kernel/schemes/collision_stage.hpp"
+#include "kernel/schemes/gas_state.hpp"
+#include "kernel/schemes/initial_state.hpp"
+
+namespace granmc {
+
+enum class StepPhase { free_flight, after_collisions };
+
+/// What an effect may need to know about the step it acts in.
+struct StepContext {
+  double dt = 0.0;                      // step length, scene time
+  const CollisionTally* tally = nullptr;  // this step's collisions (after_collisions phase)
+};
+
+template <class Kernel, class... Effects>
+class Dsmc {
+ public:
+  /// Stored energy may drift by this factor before the velocities are rescaled.
+  static constexpr double rescale_factor = 1.25;
+
+  Dsmc(const Scene& scene, std::uint64_t replica, Effects... effects)
+      : scene_(scene),
+        rng_(scene.run.seed, replica),
+        pairs_(pair_coefficients(scene)),
+        effects_(effects...),
+        state_(maxwellian_state(scene, rng_)) {
+    for (const SpeciesConfig& s : scene.species) total_particles_ += static_cast<double>(s.particles);
+    rescale();  // unit stored temperature from the start; not counted as a rescaling during the run
+    rescales_ = 0;
+    momentum_removed_ = 0.0;
+    log_temperature0_ = log_temperature();
+    // Initial majorant: omega_max^(ij) = 4 pi sigma_ij^2 n_j chi_ij (max_k |c_k| + max_l |c_l|), an
+    // exact bound on omega_kl at t = 0; afterwards it grows when exceeded (000 sec. 3).
+    std::vector<double> max_speed;
+    for (const SpeciesStore& s : state_.species) {
+      double m = 0.0;
+      s.for_each_velocity([&](const Vec3& c) { m = std::max(m, norm2(c)); });
+      max_speed.push_back(std::sqrt(m));
+    }
+    for (const PairCoefficients& p : pairs_) {
+      omega_max_.push_back(p.rate_prefactor * (max_speed[p.i] + max_speed[p.j]));
+      carried_.push_back(0.0);
+    }
+  }
+
+  [[nodiscard]] const GasState& state() const noexcept { return state_; }
+  [[nodiscard]] const CollisionTally& tally() const noexcept { return total_; }
+  [[nodiscard]] std::uint64_t rescales() const noexcept { return rescales_; }
+  [[nodiscard]] double momentum_removed_relative() const noexcept { return momentum_removed_; }
+  [[nodiscard]] const std::vector<double>& omega_max() const noexcept { return omega_max_; }
+
+  /// Steps until the time reaches t; the last step is shortened to land on t exactly.
+  void advance_to(double t) {
+    while (state_.time < t) {
+      const double dt = std::min(step_length(), t - state_.time);
+      step(dt);
+      state_.time = state_.time + dt >= t ? t : state_.time + dt;
+    }
+  }
+
+ private:
+  double log_temperature() const noexcept {
+    return state_.scale.log_temperature(twice_energy_ / (3.0 * total_particles_));
+  }
+
+  double step_length() const noexcept {
+    if (scene_.run.dt_scaling == DtScaling::fixed) return scene_.run.dt;
+    return scene_.run.dt * std::exp(0.5 * (log_temperature0_ - log_temperature()));
+  }
+
+  void step(double dt) {
+    const StepContext free_flight{dt, nullptr};
+    run_phase<StepPhase::free_flight>(free_flight);
+
+    CollisionTally tally;
+    const double u_dt = std::exp(state_.scale.log_u + std::log(dt));
+    for (std::size_t q = 0; q < pairs_.size(); ++q) {
+      const PairCoefficients& p = pairs_[q];
+      const double n_i = static_cast<double>(state_.species[p.i].size());
+      if (p.i == p.j && n_i < 2.0) continue;
+      const double wanted = 0.5 * n_i * omega_max_[q] * u_dt + carried_[q];  // 1/2 N_i omega_max dt
+      if (!(wanted < static_cast<double>(RandomStream::counter_limit / 2)))
+        throw std::runtime_error("time step too large: " + std::to_string(wanted) +
+                                 " collision candidates in one step; reduce run.dt");
+      const double whole = std::floor(wanted);
+      carried_[q] = wanted - whole;
+      collide_pair<Kernel>(state_, p, omega_max_[q], static_cast<std::uint64_t>(whole), rng_, tally);
+    }
+    twice_energy_ -= tally.twice_energy_loss;
+
+    const StepContext after{dt, &tally};
+    run_phase<StepPhase::after_collisions>(after);
+
+    total_.candidates += tally.candidates;
+    total_.collisions += tally.collisions;
+    total_.majorant_updates += tally.majorant_updates;
+    total_.twice_energy_loss += tally.twice_energy_loss;
+    ++state_.step;
+    if (twice_energy_ < reference_twice_energy_ / rescale_factor ||
+        twice_energy_ > reference_twice_energy_ * rescale_factor)
+      rescale();
+  }
+
+  template <StepPhase phase>
+  void run_phase(const StepContext& ctx) noexcept {
+    std::apply([&](auto&... e) { ((std::decay_t<decltype(e)>::phase == phase ? e.apply(state_, ctx) : void()), ...); },
+               effects_);
+  }
+
+  /// Removes the centre-of-mass velocity and rescales the stored velocities to unit mean temperature,
+  /// moving the scale into log u. omega_max stays in stored units: the majorant estimate follows the
+  /// thermal speed, as the shape of the scaled distribution does.
+  void rescale() noexcept {
+    const GasTotals t = gas_totals(scene_, gas_moments(state_));
+    const Vec3 v_cm = (1.0 / t.mass) * t.momentum;
+    momentum_removed_ += norm(t.momentum) / std::sqrt(t.mass * t.twice_energy);
+    const double twice_energy = t.twice_energy - norm2(t.momentum) / t.mass;  // after removing v_cm
+    const double s = std::sqrt(3.0 * total_particles_ / twice_energy);
+    for (SpeciesStore& store : state_.species) store.for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
+    state_.scale.log_u -= std::log(s);
+    twice_energy_ = reference_twice_energy_ = 3.0 * total_particles_;
+    ++rescales_;
+  }
+
+  const Scene& scene_;
+  RandomStream rng_;
+  std::vector<PairCoefficients> pairs_;
+  std::tuple<Effects...> effects_;
+  GasState state_;
+  std::vector<double> omega_max_;  // per ordered pair, units of u
+  std::vector<double> carried_;    // fractional candidates carried to the next step
+  CollisionTally total_;
+  double total_particles_ = 0.0;
+  double twice_energy_ = 0.0;            // tracked sum_i m_i sum_k |c_k|^2
+  double reference_twice_energy_ = 0.0;  // its value after the last rescaling
+  double log_temperature0_ = 0.0;
+  double momentum_removed_ = 0.0;
+  std::uint64_t rescales_ = 0;
+};
+
+}  // namespace granmc

@@ -1,0 +1,31 @@
+#pragma once
+// One replica of the time-stepped scheme from t = 0 to t_end, observed at the sample times.
+#include <cstdint>
+#include <vector>
+
+#include "kernel/observe/gas_observation.hpp"
+#include "kernel/schemes/dsmc.hpp"
+#include "kernel/schemes/run_options.hpp"
+
+namespace granmc {
+
+template <class Kernel, class... Effects>
+ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
+                               const RunOptions& options, Effects... effects) {
+  Dsmc<Kernel, Effects...> sim(scene, replica, effects...);
+  ReplicaSeries series;
+  series.species.resize(scene.species.size());
+  for (double t : times) {
+    sim.advance_to(t);
+    observe_gas(scene, sim.state(), series);
+    series.collisions.push_back(static_cast<double>(sim.tally().collisions));
+    if (options.on_sample) options.on_sample();
+  }
+  series.candidates = sim.tally().candidates;
+  series.majorant_updates = sim.tally().majorant_updates;
+  series.rescales = sim.rescales();
+  series.momentum_removed_relative = sim.momentum_removed_relative();
+  return series;
+}
+
+}  // namespace granmc

@@ -1,0 +1,32 @@
+#include "kernel/schemes/initial_state.hpp"
+
+#include <cmath>
+
+#include "kernel/core/sampling.hpp"
+#include "kernel/observe/moments.hpp"
+
+namespace granmc {
+
+GasState maxwellian_state(const Scene& scene, const RandomStream& rng) {
+  GasState state;
+  state.scale.log_u = 0.5 * std::log(scene.initial_temperature);
+  for (std::size_t i = 0; i < scene.species.size(); ++i) {
+    const SpeciesConfig& sp = scene.species[i];
+    SpeciesStore store(static_cast<std::size_t>(sp.particles));
+    const double width = 1.0 / std::sqrt(sp.mass);  // stored units: <c_x^2> = T(0) / (m u^2) = 1 / m
+    for (std::size_t k = 0; k < store.size(); ++k) {
+      const RandomBlock r = rng.block(RngPurpose::initial_velocity, static_cast<std::uint16_t>(i), 0, k);
+      double z[4];
+      standard_normal_pair(uniform_open(r[0]), uniform_open(r[1]), z[0], z[1]);
+      standard_normal_pair(uniform_open(r[2]), uniform_open(r[3]), z[2], z[3]);
+      store.set_velocity(k, {width * z[0], width * z[1], width * z[2]});
+    }
+    const SpeciesMoments m = species_moments(store);
+    const Vec3 mean = (1.0 / static_cast<double>(store.size())) * m.sum_c;
+    store.for_each_velocity([&](Vec3& c) { c -= mean; });
+    state.species.push_back(std::move(store));
+  }
+  return state;
+}
+
+}  // namespace granmc

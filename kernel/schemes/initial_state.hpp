@@ -1,0 +1,15 @@
+#pragma once
+#include <cstdint>
+
+#include "kernel/core/philox_stream.hpp"
+#include "kernel/core/scene.hpp"
+#include "kernel/schemes/gas_state.hpp"
+
+namespace granmc {
+
+/// Maxwellian velocities at the scene's initial temperature for every species (000 eq. 13), then each
+/// species' mean velocity subtracted so the total momentum vanishes (000 sec. 3). The velocity scale is
+/// u = sqrt(T(0)), so stored velocities have m <c^2> / 3 = 1 on average.
+GasState maxwellian_state(const Scene& scene, const RandomStream& rng);
+
+}  // namespace granmc

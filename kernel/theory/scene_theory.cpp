@@ -1,0 +1,32 @@
+#include "kernel/theory/scene_theory.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "kernel/collide/enskog_chi.hpp"
+#include "kernel/theory/sonine.hpp"
+
+namespace granmc::theory {
+
+std::optional<CoolingStatePrediction> cooling_state(const Scene& scene, const std::vector<double>& times) {
+  if (scene.species.size() != 1 || scene.run.method != Method::dsmc ||
+      scene.collision.kernel != CollisionKernel::hard_sphere || scene.thermostat.kind != ThermostatKind::none ||
+      scene.shear_rate != 0.0 || scene.relaxation)
+    return std::nullopt;
+  const SpeciesConfig& s = scene.species[0];
+  CoolingStatePrediction p;
+  p.alpha = scene.collision.restitution[0][0];
+  p.chi = scene.collision.packing_fraction > 0.0
+              ? enskog_chi(scene.collision.packing_fraction, {1.0}, {s.diameter}, 0, 0)
+              : 1.0;
+  p.a2 = hcs_a2(p.alpha);
+  const double t0 = scene.initial_temperature;
+  p.cooling_rate0 = cooling_rate(p.alpha, s.density, s.diameter, s.mass, t0, p.chi, p.a2);
+  p.cooling_rate0_maxwell = cooling_rate(p.alpha, s.density, s.diameter, s.mass, t0, p.chi, 0.0);
+  p.collision_frequency0 =
+      4.0 * std::sqrt(std::numbers::pi) * s.density * s.diameter * s.diameter * p.chi * std::sqrt(t0 / s.mass);
+  for (double t : times) p.temperature.push_back(haff_temperature(t, t0, p.cooling_rate0));
+  return p;
+}
+
+}  // namespace granmc::theory

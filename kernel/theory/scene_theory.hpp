@@ -1,0 +1,24 @@
+#pragma once
+// The theory that applies to a scene, for `granmc theory`, comparison lines and tests.
+#include <optional>
+#include <vector>
+
+#include "kernel/core/scene.hpp"
+
+namespace granmc::theory {
+
+/// Monodisperse hard-sphere homogeneous cooling state (no thermostat, no shear).
+struct CoolingStatePrediction {
+  double alpha = 1.0;
+  double chi = 1.0;                 // Carnahan-Starling chi (000 eq. 3); 1 when dilute
+  double a2 = 0.0;                  // first-Sonine a2 of the HCS
+  double cooling_rate0 = 0.0;       // zeta at T(0), with the Sonine factor (1 + 3 a2 / 16)
+  double cooling_rate0_maxwell = 0.0;  // zeta at T(0) for a Maxwellian (a2 = 0)
+  double collision_frequency0 = 0.0;   // nu = 4 sqrt(pi) n sigma^2 chi sqrt(T / m) at T(0), Maxwellian
+  std::vector<double> temperature;  // Haff's law at the sample times
+};
+
+/// The HCS prediction if the scene is a monodisperse hard-sphere cooling state, else nothing.
+std::optional<CoolingStatePrediction> cooling_state(const Scene& scene, const std::vector<double>& times);
+
+}  // namespace granmc::theory

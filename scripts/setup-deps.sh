@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian packages granmc needs, skipping those already present.
+# Used by `make run`, `make test` and `make bench`; safe to run again (it does nothing when all are there).
+set -euo pipefail
+
+packages=(
+  cmake g++ make libgomp1
+  libeigen3-dev libxsimd-dev libhdf5-dev librandom123-dev libtomlplusplus-dev libcli11-dev
+  nlohmann-json3-dev libgtest-dev libbenchmark-dev
+  python3 python3-matplotlib python3-h5py
+)
+if [ "${GRANMC_MPI:-OFF}" = "ON" ]; then packages+=(openmpi-bin libopenmpi-dev); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then :; else missing+=("$p"); fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} Debian packages present"
+  exit 0
+fi
+
+echo "setup: missing Debian packages: ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    SUDO=sudo
+  else
+    echo "setup: installing them needs root. Run as root, or install them yourself:" >&2
+    echo "  sudo apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+else
+  SUDO=
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq "${missing[@]}"
+echo "setup: installed ${missing[*]}"
