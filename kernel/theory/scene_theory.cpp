@@ -5,6 +5,7 @@
 
 #include "kernel/collide/enskog_chi.hpp"
 #include "kernel/theory/sonine.hpp"
+#include "kernel/theory/sonine_hcs.hpp"
 
 namespace granmc::theory {
 
@@ -20,9 +21,18 @@ std::optional<CoolingStatePrediction> cooling_state(const Scene& scene, const st
               ? enskog_chi(scene.collision.packing_fraction, {1.0}, {s.diameter}, 0, 0)
               : 1.0;
   p.a2 = hcs_a2(p.alpha);
+  p.a2_model_error = hcs_a2_model_error(p.alpha);
+  const SecondSonine second = hcs_second_sonine(p.alpha);
+  p.a2_second_sonine = second.a2;
+  p.a3_second_sonine = second.a3;
   const double t0 = scene.initial_temperature;
-  p.cooling_rate0 = cooling_rate(p.alpha, s.density, s.diameter, s.mass, t0, p.chi, p.a2);
   p.cooling_rate0_maxwell = cooling_rate(p.alpha, s.density, s.diameter, s.mass, t0, p.chi, 0.0);
+  p.cooling_rate0_first_sonine = cooling_rate(p.alpha, s.density, s.diameter, s.mass, t0, p.chi, p.a2);
+  const double factor = hcs_cooling_rate_factor(second.a2, second.a3);
+  p.cooling_rate0 = p.cooling_rate0_maxwell * factor;
+  // The run starts Maxwellian (factor 1) and relaxes to the HCS factor within a few collisions; the
+  // factor itself is uncertain by about (3/16) of the a2 model error.
+  p.cooling_rate_model_error = std::fabs(factor - 1.0) + 3.0 / 16.0 * p.a2_model_error;
   p.collision_frequency0 =
       4.0 * std::sqrt(std::numbers::pi) * s.density * s.diameter * s.diameter * p.chi * std::sqrt(t0 / s.mass);
   for (double t : times) p.temperature.push_back(haff_temperature(t, t0, p.cooling_rate0));
