@@ -1,6 +1,5 @@
 #include "kernel/observe/replica_statistics.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "kernel/observe/compensated_sum.hpp"
@@ -15,7 +14,7 @@ MeanCI replica_mean(std::span<const double> values) noexcept {
   const double mean = s1.value() / n;
   CompensatedSum s2;  // centred second moment: eta_2 - eta_1^2 without cancellation
   for (double v : values) s2.add((v - mean) * (v - mean));
-  const double variance = std::max(0.0, s2.value() / n);
+  const double variance = s2.value() / n;  // NaN if a replica is NaN: no false precision
   return {mean, confidence_lambda_p * std::sqrt(variance / n)};  // 001 eq. (31)
 }
 

@@ -1,0 +1,32 @@
+#pragma once
+// The HDF5 result file of a run: the scene text, seed, version and units as root attributes, the replica
+// series and their replica means with confidence half-widths, per-replica counters and the theory lines
+// when they apply. Layout (S sample times, R replicas; every dataset carries a `description` attribute):
+//
+//   /                         attributes scene, scene_path, seed, replicas, method, version, units,
+//                             wall_seconds, threads, particles
+//   /times                    [S]
+//   /temperature/{mean,ci}    [S], /temperature/replicas [R x S]
+//   /log_temperature/{mean,ci} [S], /log_temperature/replicas [R x S]
+//   /species/<name>/          attributes name, index (scene order), particles, mass
+//     temperature/{mean,ci,replicas}, a2/{mean,ci,replicas}
+//   /momentum/replicas        [R x S x 3]
+//   /momentum_relative/{mean,ci} [S], /momentum_relative/replicas [R x S]
+//   /collisions/replicas      [R x S], cumulative accepted collisions (stored as double, exact below 2^53)
+//   /counters/{candidates,majorant_updates,rescales} [R] uint64, /counters/momentum_removed_relative [R]
+//   /temperature_ratio        scalar group with attributes mean, ci (two species only)
+//   /theory/                  attributes a2_sonine, cooling_rate0, cooling_rate0_maxwell, chi, alpha,
+//                             collision_frequency0; /theory/haff_temperature [S] (when the theory applies)
+#include <string>
+
+#include "io/run_report.hpp"
+#include "kernel/core/scene.hpp"
+#include "kernel/observe/gas_series.hpp"
+
+namespace granmc {
+
+/// Writes the result file to `path + ".tmp-<pid>"` and renames it to `path` when complete. On any failure
+/// the temporary file is removed, `path` is left untouched, and std::runtime_error says what failed.
+void write_hdf5(const std::string& path, const Scene& scene, const RunResult& result, const RunReport& report);
+
+}  // namespace granmc

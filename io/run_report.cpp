@@ -1,0 +1,111 @@
+#include "io/run_report.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "kernel/observe/compensated_sum.hpp"
+
+namespace granmc {
+namespace {
+
+const char* method_spelling(Method method) noexcept {
+  switch (method) {
+    case Method::dsmc:
+      return "dsmc";
+    case Method::event:
+      return "event";
+    case Method::gillespie:
+      return "gillespie";
+  }
+  return "unknown";
+}
+
+void require_length(std::size_t got, std::size_t want, const char* what, std::size_t replica) {
+  if (got != want)
+    throw std::invalid_argument("run result: replica " + std::to_string(replica) + " has " + std::to_string(got) +
+                                " values of " + what + ", expected " + std::to_string(want));
+}
+
+void check_shapes(const RunResult& result) {
+  const std::size_t samples = result.times.size();
+  const std::size_t species = result.species_names.size();
+  if (result.replicas.empty()) throw std::invalid_argument("run result: no replicas");
+  for (std::size_t r = 0; r < result.replicas.size(); ++r) {
+    const ReplicaSeries& s = result.replicas[r];
+    require_length(s.temperature.size(), samples, "temperature", r);
+    require_length(s.log_temperature.size(), samples, "log_temperature", r);
+    require_length(s.momentum.size(), samples, "momentum", r);
+    require_length(s.momentum_relative.size(), samples, "momentum_relative", r);
+    require_length(s.collisions.size(), samples, "collisions", r);
+    require_length(s.species.size(), species, "species", r);
+    for (const SpeciesSeries& sp : s.species) {
+      require_length(sp.temperature.size(), samples, "species temperature", r);
+      require_length(sp.log_temperature.size(), samples, "species log_temperature", r);
+      require_length(sp.a2.size(), samples, "species a2", r);
+    }
+  }
+}
+
+/// Replica mean and CI at each sample time of the series that `pick` selects from a replica.
+template <class Pick>
+MeanCISeries per_time(const RunResult& result, Pick pick) {
+  MeanCISeries out;
+  std::vector<double> values(result.replicas.size());
+  for (std::size_t k = 0; k < result.times.size(); ++k) {
+    for (std::size_t r = 0; r < result.replicas.size(); ++r) values[r] = pick(result.replicas[r])[k];
+    const MeanCI m = replica_mean(values);
+    out.mean.push_back(m.mean);
+    out.ci.push_back(m.ci);
+  }
+  return out;
+}
+
+/// T_1/T_2 averaged over samples k >= (S-1)/2 in each replica, then over replicas. The ratio is taken as
+/// exp(ln T_1 - ln T_2), which stays finite when both temperatures underflow in a long cooling run.
+MeanCI temperature_ratio(const RunResult& result) {
+  const std::size_t samples = result.times.size();
+  const std::size_t first = (samples - 1) / 2;  // k >= samples/2 with samples = S - 1 intervals
+  std::vector<double> per_replica;
+  for (const ReplicaSeries& s : result.replicas) {
+    CompensatedSum sum;
+    for (std::size_t k = first; k < samples; ++k)
+      sum.add(std::exp(s.species[0].log_temperature[k] - s.species[1].log_temperature[k]));
+    per_replica.push_back(sum.value() / static_cast<double>(samples - first));
+  }
+  return replica_mean(per_replica);
+}
+
+}  // namespace
+
+RunReport make_run_report(const Scene& scene, const RunResult& result, double wall_seconds) {
+  check_shapes(result);
+  RunReport report;
+  report.method = method_spelling(scene.run.method);
+  report.wall_seconds = wall_seconds;
+  report.temperature = per_time(
+      result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; });
+  report.log_temperature = per_time(
+      result, [](const ReplicaSeries& s) -> const auto& { return s.log_temperature; });
+  report.momentum_relative = per_time(
+      result, [](const ReplicaSeries& s) -> const auto& { return s.momentum_relative; });
+  for (std::size_t i = 0; i < result.species_names.size(); ++i) {
+    SpeciesReport sp;
+    sp.name = result.species_names[i];
+    sp.temperature = per_time(
+        result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].temperature; });
+    sp.a2 = per_time(
+        result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a2; });
+    report.species.push_back(std::move(sp));
+  }
+  for (const ReplicaSeries& s : result.replicas) {
+    if (!s.collisions.empty()) report.collisions += static_cast<std::uint64_t>(std::llround(s.collisions.back()));
+    report.candidates += s.candidates;
+    report.majorant_updates += s.majorant_updates;
+    report.rescales += s.rescales;
+  }
+  if (result.species_names.size() == 2 && !result.times.empty()) report.temperature_ratio = temperature_ratio(result);
+  report.theory = theory::cooling_state(scene, result.times);
+  return report;
+}
+
+}  // namespace granmc

@@ -1,0 +1,58 @@
+#pragma once
+// RunReport: the statistics of a finished run over its replicas, computed once and shared by the HDF5
+// file (io/hdf5_output) and the JSON summary (io/summary_json), so both outputs say the same numbers.
+// Every mean comes with its confidence half-width ci = lambda_p sqrt(Var / R) (001 eq. 31, lambda_p = 3.2,
+// kernel/observe/replica_statistics.hpp) over the R replicas.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/core/scene.hpp"
+#include "kernel/observe/gas_series.hpp"
+#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/theory/scene_theory.hpp"
+
+namespace granmc {
+
+/// A replica mean and its confidence half-width at each sample time (same length as RunResult::times).
+struct MeanCISeries {
+  std::vector<double> mean;
+  std::vector<double> ci;
+
+  [[nodiscard]] std::size_t size() const noexcept { return mean.size(); }
+  [[nodiscard]] MeanCI at(std::size_t k) const { return {mean.at(k), ci.at(k)}; }
+};
+
+struct SpeciesReport {
+  std::string name;
+  MeanCISeries temperature;  // T_i(t) = m_i <V^2> / 3, energy units
+  MeanCISeries a2;           // (3/5) <V^4>/<V^2>^2 - 1, dimensionless
+};
+
+struct RunReport {
+  std::string method;                  // "dsmc" | "event" | "gillespie", as spelled in scene files
+  double wall_seconds = 0.0;           // wall-clock time of the run, s
+  MeanCISeries temperature;            // mixture T(t) = sum_i x_i T_i, energy units
+  MeanCISeries log_temperature;        // <ln T>(t) over replicas (finite where T underflows)
+  MeanCISeries momentum_relative;      // |P| / sqrt(M 2 E_kin), dimensionless
+  std::vector<SpeciesReport> species;  // in scene order
+
+  std::uint64_t collisions = 0;        // accepted collisions, summed over replicas (last sample)
+  std::uint64_t candidates = 0;        // candidate pairs tested, all replicas
+  std::uint64_t majorant_updates = 0;  // omega_max raises, all replicas
+  std::uint64_t rescales = 0;          // velocity rescalings, all replicas
+
+  /// T_1/T_2 over the last half of the samples (k >= (S-1)/2 with S sample times): per replica the time
+  /// average of T_1/T_2, then the replica mean. Only for two species.
+  std::optional<MeanCI> temperature_ratio;
+
+  /// Haff's law and the Sonine HCS a2 when the scene is a monodisperse hard-sphere cooling state.
+  std::optional<theory::CoolingStatePrediction> theory;
+};
+
+/// Computes the report of `result`. Throws std::invalid_argument if `result` is not consistent (no
+/// replicas, or a series whose length differs from the number of sample times or species).
+RunReport make_run_report(const Scene& scene, const RunResult& result, double wall_seconds);
+
+}  // namespace granmc

@@ -1,0 +1,79 @@
+#include "io/summary_json.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+#include "granmc/version.hpp"
+#include "io/theory_json.hpp"
+
+namespace granmc {
+namespace {
+
+/// A number, or null when it is not finite (JSON has no NaN or infinity).
+nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+nlohmann::json numbers(const std::vector<double>& xs) {
+  nlohmann::json a = nlohmann::json::array();
+  for (double x : xs) a.push_back(number(x));
+  return a;
+}
+
+nlohmann::json mean_ci(const MeanCISeries& s) { return {{"mean", numbers(s.mean)}, {"ci", numbers(s.ci)}}; }
+nlohmann::json mean_ci(const MeanCI& m) { return {{"mean", number(m.mean)}, {"ci", number(m.ci)}}; }
+
+}  // namespace
+
+nlohmann::json summary_json(const Scene& scene, const RunResult& result, const RunReport& report) {
+  nlohmann::json j;
+  j["scene"] = scene.source_path;
+  j["seed"] = scene.run.seed;
+  j["replicas"] = result.replicas.size();
+  j["method"] = report.method;
+  j["wall_seconds"] = number(report.wall_seconds);
+  j["collisions"] = report.collisions;
+  j["candidates"] = report.candidates;
+  j["majorant_updates"] = report.majorant_updates;
+  j["rescales"] = report.rescales;
+  j["threads"] = result.threads;
+  j["version"] = granmc::version;
+  j["times"] = numbers(result.times);
+  j["temperature"] = mean_ci(report.temperature);
+  j["log_temperature"] = mean_ci(report.log_temperature);
+  j["momentum_relative"] = mean_ci(report.momentum_relative);
+  nlohmann::json species = nlohmann::json::array();
+  for (const SpeciesReport& sp : report.species)
+    species.push_back({{"name", sp.name}, {"temperature", mean_ci(sp.temperature)}, {"a2", mean_ci(sp.a2)}});
+  j["species"] = std::move(species);
+  if (report.temperature_ratio) j["temperature_ratio"] = mean_ci(*report.temperature_ratio);
+  if (report.theory) {
+    j["theory"] = cooling_state_json(*report.theory);
+  }
+  return j;
+}
+
+void write_summary(const std::string& path, const nlohmann::json& summary) {
+  const std::string temporary = path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+  auto fail = [&](const std::string& what) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write summary '" + path + "': " + what + " (" + reason + ")");
+  };
+  {
+    std::ofstream out(temporary, std::ios::out | std::ios::trunc);
+    if (!out) fail("cannot create '" + temporary + "'");
+    // error_handler::replace: an invalid UTF-8 byte in a name (e.g. the scene path) becomes U+FFFD, not a throw.
+    out << summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    out.close();
+    if (!out) fail("cannot write '" + temporary + "'");
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail("cannot rename '" + temporary + "' to it");
+}
+
+}  // namespace granmc

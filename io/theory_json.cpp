@@ -1,0 +1,60 @@
+#include "io/theory_json.hpp"
+
+#include "kernel/collide/enskog_chi.hpp"
+#include "kernel/schemes/sample_times.hpp"
+#include "kernel/theory/sonine.hpp"
+
+namespace granmc {
+
+nlohmann::json cooling_state_json(const theory::CoolingStatePrediction& p) {
+  return {{"alpha", p.alpha},
+          {"chi", p.chi},
+          {"a2", p.a2},
+          {"a2_model_error", p.a2_model_error},
+          {"a2_second_sonine", p.a2_second_sonine},
+          {"a3_second_sonine", p.a3_second_sonine},
+          {"cooling_rate0", p.cooling_rate0},
+          {"cooling_rate0_first_sonine", p.cooling_rate0_first_sonine},
+          {"cooling_rate0_maxwell", p.cooling_rate0_maxwell},
+          {"cooling_rate_model_error", p.cooling_rate_model_error},
+          {"collision_frequency0", p.collision_frequency0},
+          {"haff_temperature", p.temperature}};
+}
+
+nlohmann::json scene_theory_json(const Scene& scene) {
+  nlohmann::json j;
+  j["scene"] = scene.source_path;
+  nlohmann::json applies = nlohmann::json::array();
+  const std::vector<double> times = sample_times(scene.run);
+  if (const auto hcs = theory::cooling_state(scene, times)) {
+    applies.push_back("homogeneous cooling state, monodisperse hard spheres: Haff's law, Sonine a2 (docs/physics.md)");
+    j["times"] = times;
+    j["cooling_state"] = cooling_state_json(*hcs);
+  }
+  if (scene.thermostat.kind == ThermostatKind::white_noise && scene.species.size() == 1 &&
+      scene.collision.kernel == CollisionKernel::hard_sphere) {
+    applies.push_back("white-noise heated steady state, monodisperse hard spheres: first-Sonine a2");
+    j["white_noise"] = {{"a2", theory::white_noise_a2(scene.collision.restitution[0][0])}};
+  }
+  if (scene.collision.packing_fraction > 0.0 && !scene.species.empty()) {
+    const double n = total_density(scene);
+    std::vector<double> x, sigma;
+    for (const auto& s : scene.species) {
+      x.push_back(s.density / n);
+      sigma.push_back(s.diameter);
+    }
+    nlohmann::json chi = nlohmann::json::array();
+    for (std::size_t a = 0; a < x.size(); ++a) {
+      nlohmann::json row = nlohmann::json::array();
+      for (std::size_t b = 0; b < x.size(); ++b)
+        row.push_back(enskog_chi(scene.collision.packing_fraction, x, sigma, static_cast<int>(a), static_cast<int>(b)));
+      chi.push_back(row);
+    }
+    applies.push_back("Enskog pair correlation at contact chi_ij, Carnahan-Starling (000 eq. 3)");
+    j["carnahan_starling_chi"] = chi;
+  }
+  j["applies"] = applies;
+  return j;
+}
+
+}  // namespace granmc
