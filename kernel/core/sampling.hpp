@@ -11,10 +11,11 @@ namespace granmc {
 /// Uniform on (0, 1) from 32 random bits: (w + 1/2) 2^-32, never 0 or 1.
 constexpr double uniform_open(std::uint32_t w) noexcept { return (static_cast<double>(w) + 0.5) * 0x1p-32; }
 
-/// Uniform on (0, 1) with 53-bit resolution from two words.
-constexpr double uniform_open53(std::uint32_t hi, std::uint32_t lo) noexcept {
-  const std::uint64_t bits = ((static_cast<std::uint64_t>(hi) << 32) | lo) >> 11;
-  return (static_cast<double>(bits) + 0.5) * 0x1p-53;
+/// Uniform on (0, 1) with 2^-52 resolution from two words: (b + 1/2) 2^-52 with b < 2^52 is exact in
+/// double, so the result is never 0 or 1.
+constexpr double uniform_open52(std::uint32_t hi, std::uint32_t lo) noexcept {
+  const std::uint64_t bits = ((static_cast<std::uint64_t>(hi) << 32) | lo) >> 12;
+  return (static_cast<double>(bits) + 0.5) * 0x1p-52;
 }
 
 /// Index uniform on {0, ..., n-1} from 64 random bits (multiply-high; the bias is below n / 2^64).

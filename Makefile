@@ -1,0 +1,43 @@
+# Thin wrapper around CMake. `make run` and `make test` work on a fresh Debian machine: they install the
+# missing Debian packages (scripts/setup-deps.sh), configure, build, then run the default study / the
+# test suite. See README.md.
+BUILD  ?= build
+PYTHON ?= /usr/bin/python3
+JOBS   ?= $(shell nproc)
+GRANMC := $(BUILD)/bin/granmc
+
+.PHONY: all setup configure build run test bench clean hcs-alpha08
+
+all: build
+
+setup:
+	@bash scripts/setup-deps.sh
+
+$(BUILD)/CMakeCache.txt: | setup
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+configure: setup $(BUILD)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The default study: a monodisperse homogeneous cooling state (alpha = 0.8) against Haff's law and Sonine a2.
+run: build
+	$(GRANMC) run drivers/scenes/default.toml --out results/default.h5 --summary results/default.json
+	$(PYTHON) drivers/plot_cooling.py results/default.h5 results/default.png
+	@echo "results: results/default.h5 results/default.json results/default.png"
+
+# Precision check of the cooling state at alpha = 0.8 (docs/validation.md).
+hcs-alpha08: build
+	$(GRANMC) run drivers/scenes/hcs_alpha08.toml --out results/hcs_alpha08.h5 --summary results/hcs_alpha08.json
+	$(PYTHON) drivers/plot_cooling.py results/hcs_alpha08.h5 results/hcs_alpha08.png
+	$(PYTHON) drivers/cooling_table.py results/hcs_alpha08.h5
+
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure
+
+bench: build
+	cmake --build $(BUILD) --target bench
+
+clean:
+	rm -rf $(BUILD)

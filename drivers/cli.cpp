@@ -1,0 +1,135 @@
+#include "drivers/cli.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "drivers/progress.hpp"
+#include "io/hdf5_output.hpp"
+#include "io/run_report.hpp"
+#include "io/scene_file.hpp"
+#include "io/summary_json.hpp"
+#include "io/theory_json.hpp"
+#include "granmc/version.hpp"
+#include "kernel/schemes/dispatch.hpp"
+
+namespace granmc {
+
+namespace {
+
+struct RunArgs {
+  std::string scene;
+  std::string out;
+  std::string summary;
+  int threads = 0;
+  std::optional<std::uint64_t> seed;
+  bool quiet = false;
+};
+
+/// Loads and checks a scene; on a bad scene prints one message and returns nothing.
+std::optional<Scene> checked_scene(const std::string& path, std::optional<std::uint64_t> seed) {
+  try {
+    Scene scene = load_scene(path);
+    if (seed) scene.run.seed = *seed;
+    if (const std::string why = unsupported_reason(scene); !why.empty()) {
+      std::cerr << "granmc: " << path << ": " << why << "\n";
+      return std::nullopt;
+    }
+    return scene;
+  } catch (const SceneError& e) {
+    std::cerr << "granmc: " << e.what() << "\n";
+    return std::nullopt;
+  }
+}
+
+std::string default_output(const std::string& scene_path) {
+  return std::filesystem::path(scene_path).stem().string() + ".h5";
+}
+
+int run_command(const RunArgs& args) {
+  const std::optional<Scene> loaded = checked_scene(args.scene, args.seed);
+  if (!loaded) return exit_bad_input;
+  const Scene& scene = *loaded;
+  const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
+
+  const bool show_progress = !args.quiet && isatty(STDERR_FILENO);
+  ProgressLine progress(static_cast<std::uint64_t>(scene.run.replicas) * (scene.run.samples + 1), show_progress);
+  RunOptions options;
+  options.threads = args.threads;
+  options.on_sample = [&progress] { progress.tick(); };
+
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    const RunResult result = run_scene(scene, options);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const RunReport report = make_run_report(scene, result, wall);
+    for (const std::string& file : {out, args.summary}) {
+      const auto dir = std::filesystem::path(file).parent_path();
+      if (!file.empty() && !dir.empty()) std::filesystem::create_directories(dir);
+    }
+    write_hdf5(out, scene, result, report);
+    if (!args.summary.empty()) write_summary(args.summary, summary_json(scene, result, report));
+    if (!args.quiet) {
+      std::printf("granmc %s: %s, %d replicas, %.1f s on %d threads -> %s%s%s\n", version, args.scene.c_str(),
+                  scene.run.replicas, wall, result.threads, out.c_str(), args.summary.empty() ? "" : ", ",
+                  args.summary.c_str());
+    }
+    return exit_ok;
+  } catch (const std::exception& e) {
+    std::cerr << "granmc: run failed: " << e.what() << "\n";
+    return exit_run_failure;
+  }
+}
+
+int theory_command(const std::string& path) {
+  const std::optional<Scene> scene = checked_scene(path, std::nullopt);
+  if (!scene) return exit_bad_input;
+  std::cout << scene_theory_json(*scene).dump(2) << "\n";
+  return exit_ok;
+}
+
+}  // namespace
+
+int cli_main(int argc, char** argv) {
+  CLI::App app{"granmc: direct-simulation Monte Carlo for granular gases (Boltzmann and Enskog equations)"};
+  app.set_version_flag("--version", std::string(version));
+  app.require_subcommand(1);
+
+  RunArgs run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Run a scene and write its results (HDF5, optional JSON summary)");
+  run_cmd->add_option("scene", run.scene, "Scene file (TOML, see docs/scenes.md)")->required();
+  run_cmd->add_option("--out", run.out, "HDF5 output file (default: <scene name>.h5 in the current directory)");
+  run_cmd->add_option("--summary", run.summary, "Also write the JSON summary of SCENES.md to this file");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
+  run_cmd->add_option("--seed", run.seed, "Override the scene's run.seed");
+  run_cmd->add_flag("--quiet", run.quiet, "No progress line and no closing message");
+
+  std::string theory_scene;
+  CLI::App* theory_cmd = app.add_subcommand("theory", "Print the theory predictions that apply to a scene (JSON)");
+  theory_cmd->add_option("scene", theory_scene, "Scene file (TOML)")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return exit_bad_input;
+  }
+  if (*run_cmd) return run_command(run);
+  return theory_command(theory_scene);
+}
+
+}  // namespace granmc

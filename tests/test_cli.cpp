@@ -1,0 +1,197 @@
+// The command line: a bad scene or bad arguments exit with status 2 before any work, with one message
+// on stderr naming the file and the key, and leave no output file; a good run exits 0 and writes both
+// outputs atomically (SCENES.md, "Command line").
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int status = -1;
+  std::string stderr_text;
+  std::string stdout_text;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(::testing::TempDir()) / ("granmc_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  }
+
+  /// Runs granmc with `args` in the test directory.
+  Outcome granmc(const std::string& args) {
+    const std::string cmd = "cd '" + dir_.string() + "' && '" GRANMC_EXECUTABLE "' " + args + " >stdout.txt 2>stderr.txt";
+    const int raw = std::system(cmd.c_str());
+    Outcome o;
+    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    o.stderr_text = slurp(dir_ / "stderr.txt");
+    o.stdout_text = slurp(dir_ / "stdout.txt");
+    fs::remove(dir_ / "stderr.txt");
+    fs::remove(dir_ / "stdout.txt");
+    return o;
+  }
+
+  /// Files in the test directory other than the scenes we wrote.
+  std::vector<std::string> outputs() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::recursive_directory_iterator(dir_))
+      if (e.path().extension() != ".toml") names.push_back(e.path().filename().string());
+    return names;
+  }
+
+  static std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+  }
+
+  fs::path dir_;
+};
+
+const std::string good_scene = R"([run]
+t_end = 0.5
+dt = 0.01
+samples = 5
+replicas = 2
+[[species]]
+particles = 500
+[collision]
+restitution = 0.9
+)";
+
+/// The good scene with one line replaced or added.
+std::string with(const std::string& from, const std::string& to) {
+  std::string s = good_scene;
+  const auto at = s.find(from);
+  if (at == std::string::npos) return s + to + "\n";
+  return s.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_F(Cli, GoodRunWritesBothOutputsAndNothingElse) {
+  write("good.toml", good_scene);
+  const Outcome o = granmc("run good.toml --out out/r.h5 --summary out/r.json --threads 2");
+  EXPECT_EQ(o.status, 0) << o.stderr_text;
+  EXPECT_TRUE(fs::exists(dir_ / "out/r.h5"));
+  EXPECT_TRUE(fs::exists(dir_ / "out/r.json"));
+  for (const auto& name : outputs()) EXPECT_EQ(name.find(".tmp"), std::string::npos) << name;
+}
+
+TEST_F(Cli, OneAndTwoThreadsWriteTheSameNumbers) {
+  write("good.toml", with("replicas = 2", "replicas = 3"));
+  ASSERT_EQ(granmc("run good.toml --quiet --threads 1 --out one.h5 --summary one.json").status, 0);
+  ASSERT_EQ(granmc("run good.toml --quiet --threads 2 --out two.h5 --summary two.json").status, 0);
+  nlohmann::json one = nlohmann::json::parse(slurp(dir_ / "one.json"));
+  nlohmann::json two = nlohmann::json::parse(slurp(dir_ / "two.json"));
+  EXPECT_EQ(one["threads"], 1);
+  EXPECT_EQ(two["threads"], 2);
+  for (auto* j : {&one, &two}) {
+    j->erase("wall_seconds");
+    j->erase("threads");
+  }
+  EXPECT_EQ(one.dump(), two.dump());  // the dump prints doubles exactly (round-trip precision)
+}
+
+TEST_F(Cli, DefaultOutputIsNamedAfterTheScene) {
+  write("good.toml", good_scene);
+  EXPECT_EQ(granmc("run good.toml --quiet").status, 0);
+  EXPECT_TRUE(fs::exists(dir_ / "good.h5"));
+}
+
+TEST_F(Cli, TheoryPrintsJsonForTheScene) {
+  write("good.toml", good_scene);
+  const Outcome o = granmc("theory good.toml");
+  EXPECT_EQ(o.status, 0) << o.stderr_text;
+  EXPECT_NE(o.stdout_text.find("\"cooling_state\""), std::string::npos);
+  EXPECT_NE(o.stdout_text.find("\"a2_second_sonine\""), std::string::npos);
+}
+
+TEST_F(Cli, HelpExitsZero) {
+  EXPECT_EQ(granmc("--help").status, 0);
+  EXPECT_EQ(granmc("run --help").status, 0);
+}
+
+TEST_F(Cli, BadArgumentsExitTwo) {
+  write("good.toml", good_scene);
+  for (const std::string args : {"", "frobnicate", "run", "run good.toml --threads 0", "run good.toml --seed x",
+                                 "run good.toml --no-such-flag"}) {
+    const Outcome o = granmc(args);
+    EXPECT_EQ(o.status, 2) << "granmc " << args;
+    EXPECT_FALSE(o.stderr_text.empty()) << "granmc " << args;
+  }
+  EXPECT_TRUE(outputs().empty());
+}
+
+// Every bad scene of issue 2 item 7: exit 2, one message naming the file and the key, no output file.
+TEST_F(Cli, BadScenesExitTwoNamingFileAndKeyWithoutOutput) {
+  struct Case {
+    std::string name, text, key;
+  };
+  const std::vector<Case> cases = {
+      {"unknown_key", with("samples = 5", "samples = 5\nfrobnicate = 1"), "run.frobnicate"},
+      {"missing_t_end", with("t_end = 0.5\n", ""), "run.t_end"},
+      {"missing_dt", with("dt = 0.01\n", ""), "run.dt"},
+      {"wrong_type", with("t_end = 0.5", "t_end = \"long\""), "run.t_end"},
+      {"dt_zero", with("dt = 0.01", "dt = 0.0"), "run.dt"},
+      {"dt_negative", with("dt = 0.01", "dt = -0.1"), "run.dt"},
+      {"restitution_above_one", with("restitution = 0.9", "restitution = 1.5"), "collision.restitution"},
+      {"restitution_negative", with("restitution = 0.9", "restitution = -0.1"), "collision.restitution"},
+      {"restitution_nan", with("restitution = 0.9", "restitution = nan"), "collision.restitution"},
+      {"mass_zero", with("particles = 500", "particles = 500\nmass = 0.0"), "species[0].mass"},
+      {"diameter_negative", with("particles = 500", "particles = 500\ndiameter = -1.0"), "species[0].diameter"},
+      {"density_zero", with("particles = 500", "particles = 500\ndensity = 0.0"), "species[0].density"},
+      {"particles_zero", with("particles = 500", "particles = 0"), "species[0].particles"},
+      {"replicas_zero", with("replicas = 2", "replicas = 0"), "run.replicas"},
+      {"temperature_inf", good_scene + "[initial]\ntemperature = inf\n", "initial.temperature"},
+      {"temperature_nan", good_scene + "[initial]\ntemperature = nan\n", "initial.temperature"},
+      {"particle_ratio",
+       with("[[species]]\nparticles = 500\n",
+            "[[species]]\nparticles = 500\ndensity = 1.0\n[[species]]\nparticles = 700\ndensity = 1.0\n"),
+       "species[1].particles"},
+      {"unknown_kernel", with("restitution = 0.9", "restitution = 0.9\nkernel = \"soft\""), "collision.kernel"},
+      {"unknown_method", with("[run]", "[run]\nmethod = \"leapfrog\""), "run.method"},
+      {"broken_toml", "[run\nt_end = 1\n", "line 1"},
+      {"empty", "", "empty"},
+      {"binary", std::string("\x7f" "ELF\0\0\x01\x02", 8), "NUL"},
+  };
+  for (const Case& c : cases) {
+    const fs::path scene = write(c.name + ".toml", c.text);
+    const Outcome o = granmc("run " + c.name + ".toml --summary s.json");
+    EXPECT_EQ(o.status, 2) << c.name << ": " << o.stderr_text;
+    EXPECT_NE(o.stderr_text.find(c.name + ".toml"), std::string::npos) << c.name << ": " << o.stderr_text;
+    EXPECT_NE(o.stderr_text.find(c.key), std::string::npos) << c.name << ": " << o.stderr_text;
+    EXPECT_EQ(std::count(o.stderr_text.begin(), o.stderr_text.end(), '\n'), 1) << c.name << ": " << o.stderr_text;
+    EXPECT_TRUE(outputs().empty()) << c.name;
+  }
+  const Outcome missing = granmc("run no_such_scene.toml");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.stderr_text.find("no_such_scene.toml"), std::string::npos) << missing.stderr_text;
+  EXPECT_TRUE(outputs().empty());
+}
+
+TEST_F(Cli, UnsupportedCombinationExitsTwoSayingWhatIsSupported) {
+  write("event.toml", with("[run]", "[run]\nmethod = \"event\""));
+  const Outcome o = granmc("run event.toml");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.stderr_text.find("supported:"), std::string::npos) << o.stderr_text;
+  EXPECT_TRUE(outputs().empty());
+}

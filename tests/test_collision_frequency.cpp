@@ -1,0 +1,57 @@
+// The collision stage produces the right number of collisions: for an elastic gas at equilibrium the
+// collision frequency is exactly nu = pi sigma^2 n chi <g> = 4 sqrt(pi) n sigma^2 chi sqrt(T / m)
+// (000 eq. 2 with a Maxwellian), so a run of length t has N nu t / 2 collisions on average.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/schemes/dispatch.hpp"
+
+using namespace granmc;
+
+namespace {
+
+/// Per replica: accepted collisions / (N nu(T(0)) t / 2), with T(0) that replica's own initial
+/// temperature (energy is conserved when alpha = 1, so T stays at T(0)).
+MeanCI collision_count_ratio(double packing_fraction, double chi) {
+  Scene s;
+  s.run.seed = 2024;
+  s.run.replicas = 8;
+  s.run.t_end = 5.0;
+  s.run.dt = 0.02;
+  s.run.samples = 1;
+  s.species.push_back({"a", 2.0, 0.5, 3.0, 10000});
+  s.collision.restitution = {{{1.0, 1.0}, {1.0, 1.0}}};
+  s.collision.packing_fraction = packing_fraction;
+  const RunResult r = run_scene(s, {});
+  std::vector<double> ratio;
+  const SpeciesConfig& sp = s.species[0];
+  for (const ReplicaSeries& rep : r.replicas) {
+    const double t0 = rep.temperature.front();
+    EXPECT_NEAR(rep.temperature.back() / t0, 1.0, 1e-12);  // elastic: energy conserved to rounding
+    const double nu = 4.0 * std::sqrt(std::numbers::pi) * sp.density * sp.diameter * sp.diameter * chi *
+                      std::sqrt(t0 / sp.mass);
+    ratio.push_back(rep.collisions.back() / (0.5 * sp.particles * nu * s.run.t_end));
+  }
+  return replica_mean(ratio);
+}
+
+}  // namespace
+
+TEST(CollisionFrequency, ElasticDiluteGasCollidesAtTheBoltzmannRate) {
+  const MeanCI m = collision_count_ratio(0.0, 1.0);
+  std::printf("[ measured ] collisions / (N nu t / 2) = %.5f +- %.5f\n", m.mean, m.ci);
+  EXPECT_NEAR(m.mean, 1.0, m.ci) << "ci " << m.ci;
+  EXPECT_LT(m.ci, 0.005);  // the check is sharp enough to see a 1% error
+}
+
+TEST(CollisionFrequency, EnskogChiMultipliesTheRate) {
+  const double phi = 0.3;
+  const double chi = (1.0 - 0.5 * phi) / std::pow(1.0 - phi, 3);  // Carnahan-Starling, monodisperse
+  const MeanCI m = collision_count_ratio(phi, chi);
+  std::printf("[ measured ] Enskog phi = 0.3: collisions / (N nu chi t / 2) = %.5f +- %.5f\n", m.mean, m.ci);
+  EXPECT_NEAR(m.mean, 1.0, m.ci) << "ci " << m.ci;
+}

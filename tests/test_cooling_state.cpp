@@ -1,0 +1,92 @@
+// The homogeneous cooling state of monodisperse inelastic hard spheres (alpha = 0.8) against theory:
+// Haff's law with the first-Sonine cooling rate, and the Sonine a2. Tolerance: the replica confidence
+// half-width (001 eq. 31) plus the documented model error of the theory (docs/physics.md, "Model
+// error of the Sonine predictions").
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/schemes/dispatch.hpp"
+#include "kernel/theory/scene_theory.hpp"
+
+using namespace granmc;
+
+namespace {
+
+constexpr double alpha = 0.8;
+
+Scene cooling_scene() {
+  Scene s;
+  s.run.seed = 8;
+  s.run.replicas = 16;
+  s.run.t_end = 20.0;  // T falls about 100-fold, about 70 collisions per particle
+  s.run.dt = 0.01;
+  s.run.samples = 40;
+  s.species.push_back({"a", 1.0, 1.0, 1.0, 50000});
+  s.collision.restitution = {{{alpha, alpha}, {alpha, alpha}}};
+  return s;
+}
+
+class CoolingState : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    scene_ = new Scene(cooling_scene());
+    result_ = new RunResult(run_scene(*scene_, {}));
+    theory_ = new theory::CoolingStatePrediction(*theory::cooling_state(*scene_, result_->times));
+  }
+  static void TearDownTestSuite() {
+    delete scene_;
+    delete result_;
+    delete theory_;
+  }
+  static Scene* scene_;
+  static RunResult* result_;
+  static theory::CoolingStatePrediction* theory_;
+};
+Scene* CoolingState::scene_ = nullptr;
+RunResult* CoolingState::result_ = nullptr;
+theory::CoolingStatePrediction* CoolingState::theory_ = nullptr;
+
+}  // namespace
+
+TEST_F(CoolingState, HaffLawWithinConfidenceAndSonineError) {
+  // A relative error delta of the cooling rate moves T(t) by at most 2 delta x / (1 + x), x = zeta0 t / 2
+  // (docs/physics.md); delta bounds the start from a Maxwellian and the Sonine truncation.
+  const double delta = theory_->cooling_rate_model_error;
+  for (std::size_t k = 0; k < result_->times.size(); ++k) {
+    std::vector<double> ratio;
+    for (const ReplicaSeries& rep : result_->replicas) ratio.push_back(rep.temperature[k] / theory_->temperature[k]);
+    const MeanCI m = replica_mean(ratio);
+    const double x = 0.5 * theory_->cooling_rate0 * result_->times[k];
+    const double model = 2.0 * delta * x / (1.0 + x);
+    EXPECT_NEAR(m.mean, 1.0, m.ci + model) << "t = " << result_->times[k];
+  }
+  // Sharp enough to fail: T fell 100-fold, and a 1% error in zeta would move T(t_end) by about 1.8%.
+  const double final_ratio = result_->replicas[0].temperature.back() / result_->replicas[0].temperature.front();
+  EXPECT_LT(final_ratio, 0.02);
+}
+
+TEST_F(CoolingState, A2MatchesSonineWithinConfidenceAndModelError) {
+  // Time average per replica once the scaled state is stationary (t >= 5: about 20 collisions per
+  // particle, while a2 relaxes within a few), then the replica mean and its CI.
+  std::vector<double> a2;
+  for (const ReplicaSeries& rep : result_->replicas) {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = 0; k < result_->times.size(); ++k)
+      if (result_->times[k] >= 5.0) {
+        sum += rep.species[0].a2[k];
+        ++count;
+      }
+    a2.push_back(sum / count);
+  }
+  const MeanCI m = replica_mean(a2);
+  std::printf("[ measured ] a2 = %.5f +- %.5f (first Sonine %.5f, model error %.5f; second Sonine %.5f)\n", m.mean,
+              m.ci, theory_->a2, theory_->a2_model_error, theory_->a2_second_sonine);
+  EXPECT_NEAR(m.mean, theory_->a2, m.ci + theory_->a2_model_error) << "ci " << m.ci;
+  EXPECT_LT(m.ci, 0.5 * std::fabs(theory_->a2));  // resolves a2 from zero
+  EXPECT_LT(m.mean + m.ci, 0.0);                   // negative at alpha = 0.8, as theory says
+}
