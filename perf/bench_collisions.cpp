@@ -1,0 +1,334 @@
+// Throughput of the time-stepped DSMC collision stage (000 sec. 3): granmc's collide_pair<HardSphere>
+// against the naive scalar reference of perf/naive_dsmc.hpp, same N, same run.
+//
+// Gas: one species of inelastic hard spheres, alpha = 0.8, n = sigma = m = 1, Maxwellian start at T = 1,
+// initial majorant omega_max = 4 pi sigma^2 n (2 max |c|) as Dsmc uses. Each benchmark iteration runs a
+// fixed number of candidate pairs (kCandidatesPerIteration); granmc advances state.step after each, so
+// every iteration draws fresh Philox blocks. The gas cools as it collides; as Dsmc does, the velocities
+// are rescaled to unit temperature whenever the tracked energy has fallen by a factor 1.25 (outside the
+// timed region, same rule for both), so the acceptance ratio stays that of a running simulation.
+//
+// Counters (rates over CPU time): candidates/s, collisions/s; acceptance = collisions / candidates.
+// Two more benchmarks time the random draws of a candidate alone (no particle memory), to show where
+// the time goes. After the runs, a table of the median figures and the ratios granmc / naive is printed.
+// Defaults: 3 repetitions, aggregates only, min time 1 s; any --benchmark_* flag overrides them.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "kernel/collide/hard_sphere.hpp"
+#include "kernel/collide/inelastic_rule.hpp"
+#include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/core/philox_stream.hpp"
+#include "kernel/core/sampling.hpp"
+#include "kernel/core/scene.hpp"
+#include "kernel/schemes/collision_stage.hpp"
+#include "kernel/schemes/gas_state.hpp"
+#include "kernel/schemes/initial_state.hpp"
+#include "perf/naive_dsmc.hpp"
+
+namespace {
+
+using namespace granmc;
+
+constexpr std::uint64_t kCandidatesPerIteration = 1'000'000;
+constexpr double kRestitution = 0.8;
+constexpr std::uint64_t kSeed = 20240601;
+constexpr double kRescaleFactor = 1.25;  // as Dsmc::rescale_factor
+constexpr std::int64_t kSizes[] = {100'000, 10'000'000};
+
+Scene bench_scene(std::int64_t particles) {
+  Scene scene;
+  scene.run.seed = kSeed;
+  scene.run.t_end = 1.0;
+  scene.run.dt = 0.01;
+  SpeciesConfig s;
+  s.name = "grains";
+  s.mass = 1.0;
+  s.diameter = 1.0;
+  s.density = 1.0;
+  s.particles = particles;
+  scene.species.push_back(s);
+  scene.collision.kernel = CollisionKernel::hard_sphere;
+  scene.collision.restitution = {{{kRestitution, kRestitution}, {kRestitution, kRestitution}}};
+  scene.initial_temperature = 1.0;
+  return scene;
+}
+
+// ---- granmc --------------------------------------------------------------------------------------
+
+struct GranmcGas {
+  explicit GranmcGas(std::int64_t n)
+      : scene(bench_scene(n)),
+        rng(scene.run.seed, 0),
+        pair(pair_coefficients(scene).front()),
+        state(maxwellian_state(scene, rng)) {
+    double max2 = 0.0;
+    state.species[0].for_each_velocity([&](const Vec3& c) { max2 = std::max(max2, norm2(c)); });
+    omega_max = pair.rate_prefactor * 2.0 * std::sqrt(max2);
+    rescale();
+  }
+
+  double twice_energy_exact() const {
+    double e = 0.0;
+    state.species[0].for_each_velocity([&](const Vec3& c) { e += norm2(c); });
+    return e;
+  }
+  void rescale() {
+    const double n = static_cast<double>(state.species[0].size());
+    const double s = std::sqrt(3.0 * n / twice_energy_exact());
+    state.species[0].for_each_velocity([&](Vec3& c) { c = s * c; });
+    twice_energy = reference = 3.0 * n;
+  }
+  bool needs_rescale() const { return twice_energy < reference / kRescaleFactor; }
+
+  Scene scene;
+  RandomStream rng;
+  PairCoefficients pair;
+  GasState state;
+  double omega_max = 0.0;
+  double twice_energy = 0.0;
+  double reference = 0.0;
+};
+
+// One gas per implementation, kept across Google Benchmark's calls of the same size (building 10^7
+// Maxwellian velocities is not what is measured); replaced when the size changes.
+GranmcGas& granmc_gas(std::int64_t n) {
+  static std::unique_ptr<GranmcGas> gas;
+  if (!gas || static_cast<std::int64_t>(gas->state.species[0].size()) != n) {
+    gas.reset();
+    gas = std::make_unique<GranmcGas>(n);
+  }
+  return *gas;
+}
+
+void granmc_stage(benchmark::State& bs) {
+  GranmcGas& g = granmc_gas(bs.range(0));
+  std::uint64_t candidates = 0, collisions = 0;
+  for (auto _ : bs) {
+    CollisionTally tally;
+    collide_pair<HardSphere>(g.state, g.pair, g.omega_max, kCandidatesPerIteration, g.rng, tally);
+    ++g.state.step;
+    g.twice_energy -= tally.twice_energy_loss;
+    candidates += tally.candidates;
+    collisions += tally.collisions;
+    if (g.needs_rescale()) {
+      bs.PauseTiming();
+      g.rescale();
+      bs.ResumeTiming();
+    }
+  }
+  bs.counters["candidates/s"] = benchmark::Counter(static_cast<double>(candidates), benchmark::Counter::kIsRate);
+  bs.counters["collisions/s"] = benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
+  bs.counters["acceptance"] = static_cast<double>(collisions) / static_cast<double>(candidates);
+}
+
+// ---- naive reference -----------------------------------------------------------------------------
+
+struct NaiveGas {
+  explicit NaiveGas(std::int64_t n)
+      : dsmc(static_cast<std::size_t>(n), kSeed, 1.0, kRestitution, 1.0, 1.0) {
+    rescale();
+  }
+  void rescale() {
+    double e = 0.0;
+    for (const naive::Particle& p : dsmc.particles) e += p.vx * p.vx + p.vy * p.vy + p.vz * p.vz;
+    const double n = static_cast<double>(dsmc.particles.size());
+    const double s = std::sqrt(3.0 * n / e);
+    for (naive::Particle& p : dsmc.particles) {
+      p.vx *= s;
+      p.vy *= s;
+      p.vz *= s;
+    }
+    twice_energy = reference = 3.0 * n;
+  }
+  bool needs_rescale() const { return twice_energy < reference / kRescaleFactor; }
+
+  naive::NaiveDsmc dsmc;
+  double twice_energy = 0.0;
+  double reference = 0.0;
+};
+
+NaiveGas& naive_gas(std::int64_t n) {
+  static std::unique_ptr<NaiveGas> gas;
+  if (!gas || static_cast<std::int64_t>(gas->dsmc.particles.size()) != n) {
+    gas.reset();
+    gas = std::make_unique<NaiveGas>(n);
+  }
+  return *gas;
+}
+
+void naive_collide(benchmark::State& bs) {
+  NaiveGas& g = naive_gas(bs.range(0));
+  std::uint64_t candidates = 0, collisions = 0;
+  for (auto _ : bs) {
+    const naive::NaiveTally tally = g.dsmc.collide(kCandidatesPerIteration);
+    g.twice_energy -= tally.twice_energy_loss;
+    candidates += tally.candidates;
+    collisions += tally.collisions;
+    if (g.needs_rescale()) {
+      bs.PauseTiming();
+      g.rescale();
+      bs.ResumeTiming();
+    }
+  }
+  bs.counters["candidates/s"] = benchmark::Counter(static_cast<double>(candidates), benchmark::Counter::kIsRate);
+  bs.counters["collisions/s"] = benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
+  bs.counters["acceptance"] = static_cast<double>(collisions) / static_cast<double>(candidates);
+}
+
+// ---- the random draws alone ---------------------------------------------------------------------
+// The draws of one candidate without touching particle memory: what the RNG and the variate
+// conversions cost, as a bound on candidates/s. granmc: 2 Philox4x32-10 blocks, 2 indices, a unit vector
+// and the acceptance uniform. naive: 2 indices (std::uniform_int_distribution), the 2 uniforms of the
+// direction and its sin/cos, and the acceptance uniform for every other candidate (the loop draws it
+// only when g.sigma > 0, about half of the candidates).
+
+void granmc_draws(benchmark::State& bs) {
+  const RandomStream rng(kSeed, 0);
+  const std::uint64_t n = 10'000'000;
+  std::uint64_t step = 0, candidates = 0;
+  for (auto _ : bs) {
+    double sink = 0.0;
+    for (std::uint64_t c = 0; c < kCandidatesPerIteration; ++c) {
+      const RandomBlock pick = rng.block(RngPurpose::collision_pair, 0, step, 2 * c);
+      const RandomBlock draw = rng.block(RngPurpose::collision_pair, 0, step, 2 * c + 1);
+      const std::uint64_t k = uniform_index(pick[0], pick[1], n);
+      const std::uint64_t l = uniform_index(pick[2], pick[3], n - 1);
+      const Vec3 sigma = unit_vector(uniform_open(draw[0]), uniform_open(draw[1]));
+      sink += static_cast<double>(k ^ l) + sigma.x + sigma.y + sigma.z + uniform_open(draw[2]);
+    }
+    benchmark::DoNotOptimize(sink);
+    ++step;
+    candidates += kCandidatesPerIteration;
+  }
+  bs.counters["candidates/s"] = benchmark::Counter(static_cast<double>(candidates), benchmark::Counter::kIsRate);
+}
+
+void naive_draws(benchmark::State& bs) {
+  std::mt19937_64 gen(kSeed);
+  const std::size_t n = 10'000'000;
+  std::uint64_t candidates = 0;
+  for (auto _ : bs) {
+    std::uniform_int_distribution<std::size_t> pick(0, n - 1);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    double sink = 0.0;
+    for (std::uint64_t c = 0; c < kCandidatesPerIteration; ++c) {
+      const std::size_t k = pick(gen);
+      std::size_t l = pick(gen);
+      while (l == k) l = pick(gen);
+      const double cos_theta = 2.0 * uniform(gen) - 1.0;
+      const double sin_theta = std::sqrt(1.0 - cos_theta * cos_theta);
+      const double phi = 2.0 * std::numbers::pi * uniform(gen);
+      sink += static_cast<double>(k ^ l) + sin_theta * std::cos(phi) + sin_theta * std::sin(phi) + cos_theta;
+      if (c & 1u) sink += uniform(gen);
+    }
+    benchmark::DoNotOptimize(sink);
+    candidates += kCandidatesPerIteration;
+  }
+  bs.counters["candidates/s"] = benchmark::Counter(static_cast<double>(candidates), benchmark::Counter::kIsRate);
+}
+
+// ---- ratio table ---------------------------------------------------------------------------------
+
+struct Figures {
+  double candidates = 0.0, collisions = 0.0, acceptance = 0.0;
+};
+
+/// The console reporter, remembering each benchmark's figures (the median when there are repetitions).
+class RecordingReporter : public benchmark::ConsoleReporter {
+ public:
+  explicit RecordingReporter(bool color) : ConsoleReporter(color ? OO_ColorTabular : OO_Tabular) {}
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.error_occurred) continue;
+      if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
+      Figures f;
+      f.candidates = counter(r, "candidates/s");
+      f.collisions = counter(r, "collisions/s");
+      f.acceptance = counter(r, "acceptance");
+      figures[r.run_name.function_name][r.run_name.args] = f;  // a median replaces the single runs
+    }
+  }
+  std::map<std::string, std::map<std::string, Figures>> figures;
+
+ private:
+  static double counter(const Run& r, const char* name) {
+    const auto it = r.counters.find(name);
+    return it == r.counters.end() ? 0.0 : it->second.value;
+  }
+};
+
+void print_ratio_table(const RecordingReporter& rep) {
+  const auto find = [&](const char* name) -> const std::map<std::string, Figures>* {
+    const auto it = rep.figures.find(name);
+    return it == rep.figures.end() || it->second.empty() ? nullptr : &it->second;
+  };
+  const auto* g = find("granmc_collide");
+  const auto* n = find("naive_collide");
+  if (g != nullptr && n != nullptr) {
+    std::printf("\nCollision stage, alpha = %.1f, %llu candidates per iteration (median of the repetitions)\n",
+                kRestitution, static_cast<unsigned long long>(kCandidatesPerIteration));
+    std::printf("| N | granmc candidates/s | naive candidates/s | ratio | granmc collisions/s | "
+                "naive collisions/s | ratio | acceptance granmc / naive |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    for (const auto& [args, gf] : *g) {
+      const auto nf = n->find(args);
+      if (nf == n->end()) continue;
+      std::printf("| %s | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f | %.4f / %.4f |\n", args.c_str(), gf.candidates,
+                  nf->second.candidates, gf.candidates / nf->second.candidates, gf.collisions,
+                  nf->second.collisions, gf.collisions / nf->second.collisions, gf.acceptance,
+                  nf->second.acceptance);
+    }
+  }
+  const auto* gd = find("granmc_draws");
+  const auto* nd = find("naive_draws");
+  if (gd != nullptr && nd != nullptr) {
+    const double a = gd->begin()->second.candidates, b = nd->begin()->second.candidates;
+    std::printf("\nRandom draws alone (no particle memory): granmc %.3g candidates/s (%.1f ns each), "
+                "naive %.3g candidates/s (%.1f ns each), ratio %.2f\n",
+                a, 1e9 / a, b, 1e9 / b, a / b);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Defaults first, so that the user's flags (later on the line) override them.
+  std::vector<std::string> defaults = {"--benchmark_repetitions=3", "--benchmark_report_aggregates_only=true",
+                                       "--benchmark_min_time=1.0"};
+  std::vector<char*> args;
+  args.push_back(argv[0]);
+  for (std::string& d : defaults) args.push_back(d.data());
+  for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
+  int n_args = static_cast<int>(args.size());
+  benchmark::Initialize(&n_args, args.data());
+  if (benchmark::ReportUnrecognizedArguments(n_args, args.data())) return 1;
+
+  // Same size next to each other, so that only one gas of each kind is alive at a time.
+  for (const std::int64_t n : kSizes) {
+    benchmark::RegisterBenchmark("granmc_collide", granmc_stage)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("naive_collide", naive_collide)->Arg(n)->Unit(benchmark::kMillisecond);
+  }
+
+  benchmark::RegisterBenchmark("granmc_draws", granmc_draws)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("naive_draws", naive_draws)->Unit(benchmark::kMillisecond);
+
+  RecordingReporter reporter(isatty(STDOUT_FILENO) != 0);
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  print_ratio_table(reporter);
+  benchmark::Shutdown();
+  return 0;
+}

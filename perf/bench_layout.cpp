@@ -1,0 +1,266 @@
+// The measurement that decides the velocity layout of SpeciesStore (DESIGN.md, Particles): random pair
+// gather + scatter, as the collision stage does it, with one array per component (SoA: x[], y[], z[])
+// against packed 32-byte records (x, y, z, aux), at N = 10^5 (fits in L2 + L3) and N = 10^7 (does not).
+//
+// Each pair: two indices k, l uniform on {0..N-1} and a direction from a table of 8 unit vectors, all from
+// one inline splitmix64 generator (the same sequence for every layout); read both velocities, apply an
+// elastic collision along the direction (g.s, then v_k -= (g.s) s, v_l += (g.s) s: energy-conserving, so
+// the values stay normal over any number of iterations), write both back. Both layouts use granmc's
+// AlignedBuffer (2 MiB alignment and MADV_HUGEPAGE for large buffers), so they differ only in layout.
+//
+// Besides the two plain loops, two "prefetch" variants generate the pairs kPrefetchDistance ahead
+// and prefetch their cache lines (2 for packed, 6 for SoA): not part of the layout decision, but the
+// figure for the batching-with-prefetch that docs/performance.md discusses.
+//
+// Counter (rate over CPU time): pairs/s. A table of the medians and the ratios follows the runs.
+// Defaults: 3 repetitions, aggregates only, min time 0.5 s; any --benchmark_* flag overrides them.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "kernel/core/aligned_buffer.hpp"
+
+namespace {
+
+using granmc::AlignedBuffer;
+
+constexpr std::uint64_t kPairsPerIteration = 1'000'000;
+constexpr std::uint64_t kPrefetchDistance = 16;
+constexpr std::int64_t kSizes[] = {100'000, 10'000'000};
+
+struct SplitMix64 {
+  std::uint64_t s;
+  std::uint64_t next() noexcept {
+    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+};
+
+struct Pair {
+  std::uint64_t k, l;
+  unsigned dir;
+};
+
+inline Pair next_pair(SplitMix64& gen, std::uint64_t n) noexcept {
+  __extension__ using uint128 = unsigned __int128;
+  const std::uint64_t r1 = gen.next();
+  const std::uint64_t r2 = gen.next();
+  return {static_cast<std::uint64_t>((static_cast<uint128>(r1) * n) >> 64),
+          static_cast<std::uint64_t>((static_cast<uint128>(r2) * n) >> 64), static_cast<unsigned>(r2 & 7u)};
+}
+
+struct Direction {
+  double x, y, z;
+};
+// The 8 unit vectors (+-1, +-1, +-1) / sqrt(3).
+constexpr double kInvSqrt3 = 0.57735026918962576451;
+constexpr Direction kDirections[8] = {
+    {kInvSqrt3, kInvSqrt3, kInvSqrt3},   {kInvSqrt3, kInvSqrt3, -kInvSqrt3},   {kInvSqrt3, -kInvSqrt3, kInvSqrt3},
+    {kInvSqrt3, -kInvSqrt3, -kInvSqrt3}, {-kInvSqrt3, kInvSqrt3, kInvSqrt3},   {-kInvSqrt3, kInvSqrt3, -kInvSqrt3},
+    {-kInvSqrt3, -kInvSqrt3, kInvSqrt3}, {-kInvSqrt3, -kInvSqrt3, -kInvSqrt3}};
+
+inline double initial_value(SplitMix64& gen) noexcept {
+  return static_cast<double>(gen.next() >> 11) * 0x1p-52 - 1.0;  // uniform on [-1, 1)
+}
+
+// ---- the two layouts -----------------------------------------------------------------------------
+
+struct SoaLayout {
+  explicit SoaLayout(std::size_t n) : x(n), y(n), z(n) {
+    SplitMix64 gen{1};
+    for (std::size_t k = 0; k < n; ++k) {
+      x[k] = initial_value(gen);
+      y[k] = initial_value(gen);
+      z[k] = initial_value(gen);
+    }
+  }
+  std::size_t size() const noexcept { return x.size(); }
+  void prefetch(std::uint64_t k) const noexcept {
+    __builtin_prefetch(&x[k], 1, 3);
+    __builtin_prefetch(&y[k], 1, 3);
+    __builtin_prefetch(&z[k], 1, 3);
+  }
+  void collide(std::uint64_t k, std::uint64_t l, const Direction& s) noexcept {
+    const double gx = x[k] - x[l], gy = y[k] - y[l], gz = z[k] - z[l];
+    const double gs = gx * s.x + gy * s.y + gz * s.z;
+    x[k] -= gs * s.x;
+    y[k] -= gs * s.y;
+    z[k] -= gs * s.z;
+    x[l] += gs * s.x;
+    y[l] += gs * s.y;
+    z[l] += gs * s.z;
+  }
+  AlignedBuffer<double> x, y, z;
+};
+
+struct PackedLayout {
+  struct alignas(32) Record {
+    double v[3];
+    double aux;
+  };
+  static_assert(sizeof(Record) == 32);
+
+  explicit PackedLayout(std::size_t n) : r(n) {
+    SplitMix64 gen{1};
+    for (std::size_t k = 0; k < n; ++k) {
+      r[k].v[0] = initial_value(gen);
+      r[k].v[1] = initial_value(gen);
+      r[k].v[2] = initial_value(gen);
+      r[k].aux = 0.0;
+    }
+  }
+  std::size_t size() const noexcept { return r.size(); }
+  void prefetch(std::uint64_t k) const noexcept { __builtin_prefetch(&r[k], 1, 3); }
+  void collide(std::uint64_t k, std::uint64_t l, const Direction& s) noexcept {
+    Record& a = r[k];
+    Record& b = r[l];
+    const double gx = a.v[0] - b.v[0], gy = a.v[1] - b.v[1], gz = a.v[2] - b.v[2];
+    const double gs = gx * s.x + gy * s.y + gz * s.z;
+    a.v[0] -= gs * s.x;
+    a.v[1] -= gs * s.y;
+    a.v[2] -= gs * s.z;
+    b.v[0] += gs * s.x;
+    b.v[1] += gs * s.y;
+    b.v[2] += gs * s.z;
+  }
+  AlignedBuffer<Record> r;
+};
+
+template <class Layout>
+void run_pairs(Layout& lay, SplitMix64& gen, std::uint64_t pairs) noexcept {
+  const std::uint64_t n = lay.size();
+  for (std::uint64_t c = 0; c < pairs; ++c) {
+    const Pair p = next_pair(gen, n);
+    lay.collide(p.k, p.l, kDirections[p.dir]);
+  }
+}
+
+/// The same pairs in the same order, generated kPrefetchDistance ahead and prefetched.
+template <class Layout>
+void run_pairs_prefetched(Layout& lay, SplitMix64& gen, std::uint64_t pairs) noexcept {
+  const std::uint64_t n = lay.size();
+  Pair ring[kPrefetchDistance];
+  const std::uint64_t ahead = pairs < kPrefetchDistance ? pairs : kPrefetchDistance;
+  for (std::uint64_t c = 0; c < ahead; ++c) {
+    ring[c] = next_pair(gen, n);
+    lay.prefetch(ring[c].k);
+    lay.prefetch(ring[c].l);
+  }
+  for (std::uint64_t c = 0; c < pairs; ++c) {
+    Pair& slot = ring[c % kPrefetchDistance];
+    lay.collide(slot.k, slot.l, kDirections[slot.dir]);
+    if (c + kPrefetchDistance < pairs) {
+      slot = next_pair(gen, n);
+      lay.prefetch(slot.k);
+      lay.prefetch(slot.l);
+    }
+  }
+}
+
+// One buffer per layout, kept across Google Benchmark's calls of the same size.
+template <class Layout>
+Layout& layout_for(std::int64_t n) {
+  static std::unique_ptr<Layout> lay;
+  if (!lay || static_cast<std::int64_t>(lay->size()) != n) {
+    lay.reset();
+    lay = std::make_unique<Layout>(static_cast<std::size_t>(n));
+  }
+  return *lay;
+}
+
+template <class Layout, bool prefetched>
+void layout_pairs(benchmark::State& bs) {
+  Layout& lay = layout_for<Layout>(bs.range(0));
+  SplitMix64 gen{0x5EEDull};  // the same pair sequence for every layout
+  std::uint64_t pairs = 0;
+  for (auto _ : bs) {
+    if constexpr (prefetched) {
+      run_pairs_prefetched(lay, gen, kPairsPerIteration);
+    } else {
+      run_pairs(lay, gen, kPairsPerIteration);
+    }
+    benchmark::ClobberMemory();
+    pairs += kPairsPerIteration;
+  }
+  bs.counters["pairs/s"] = benchmark::Counter(static_cast<double>(pairs), benchmark::Counter::kIsRate);
+}
+
+// ---- ratio table ---------------------------------------------------------------------------------
+
+/// The console reporter, remembering each benchmark's pairs/s (the median when there are repetitions).
+class RecordingReporter : public benchmark::ConsoleReporter {
+ public:
+  explicit RecordingReporter(bool color) : ConsoleReporter(color ? OO_ColorTabular : OO_Tabular) {}
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.error_occurred) continue;
+      if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
+      const auto it = r.counters.find("pairs/s");
+      if (it != r.counters.end()) rate[r.run_name.args][r.run_name.function_name] = it->second.value;
+    }
+  }
+  std::map<std::string, std::map<std::string, double>> rate;  // [N][benchmark]
+};
+
+void print_ratio_table(const RecordingReporter& rep) {
+  std::printf("\nRandom pair gather + scatter, %llu pairs per iteration (median of the repetitions)\n",
+              static_cast<unsigned long long>(kPairsPerIteration));
+  std::printf("| N | SoA pairs/s | packed pairs/s | packed / SoA | SoA+prefetch pairs/s | "
+              "packed+prefetch pairs/s | packed+prefetch / packed |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (const auto& [args, r] : rep.rate) {
+    const auto get = [&](const char* name) {
+      const auto it = r.find(name);
+      return it == r.end() ? std::nan("") : it->second;
+    };
+    const double soa = get("layout_soa"), packed = get("layout_packed");
+    const double soa_p = get("layout_soa_prefetch"), packed_p = get("layout_packed_prefetch");
+    std::printf("| %s | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f |\n", args.c_str(), soa, packed, packed / soa,
+                soa_p, packed_p, packed_p / packed);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Defaults first, so that the user's flags (later on the line) override them.
+  std::vector<std::string> defaults = {"--benchmark_repetitions=3", "--benchmark_report_aggregates_only=true",
+                                       "--benchmark_min_time=0.5"};
+  std::vector<char*> args;
+  args.push_back(argv[0]);
+  for (std::string& d : defaults) args.push_back(d.data());
+  for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
+  int n_args = static_cast<int>(args.size());
+  benchmark::Initialize(&n_args, args.data());
+  if (benchmark::ReportUnrecognizedArguments(n_args, args.data())) return 1;
+
+  for (const std::int64_t n : kSizes) {
+    benchmark::RegisterBenchmark("layout_soa", layout_pairs<SoaLayout, false>)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("layout_packed", layout_pairs<PackedLayout, false>)
+        ->Arg(n)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("layout_soa_prefetch", layout_pairs<SoaLayout, true>)
+        ->Arg(n)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("layout_packed_prefetch", layout_pairs<PackedLayout, true>)
+        ->Arg(n)
+        ->Unit(benchmark::kMillisecond);
+  }
+
+  RecordingReporter reporter(isatty(STDOUT_FILENO) != 0);
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  print_ratio_table(reporter);
+  benchmark::Shutdown();
+  return 0;
+}
