@@ -4,8 +4,9 @@
 //
 // The velocity layout is hidden behind this interface (physics never indexes the raw buffer), because it
 // is a measured choice: a random candidate pair among 10^7 particles touches 6 cache lines with one array
-// per component but 2 with one packed 32-byte record per particle (x, y, z, aux), and ran 3-4x faster
-// (perf/bench_layout.cpp keeps the measurement; docs/performance.md the figures). The fourth slot `aux`
+// per component but 2 with one packed 32-byte record per particle (x, y, z, aux), and ran 1.6x faster
+// in a plain loop, 2.1-2.3x with prefetch (perf/bench_layout.cpp keeps the measurement;
+// docs/performance.md the figures). The fourth slot `aux`
 // is reserved for the lazy-update time t_j of the event scheme (001 sec. 4), so that scheme also stays
 // within 32 bytes per particle.
 #include <cstddef>
