@@ -69,6 +69,7 @@ int run_command(const RunArgs& args) {
   try {
     const auto start = std::chrono::steady_clock::now();
     const RunResult result = run_scene(scene, options);
+    progress.finish();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const RunReport report = make_run_report(scene, result, wall);
     for (const std::string& file : {out, args.summary}) {

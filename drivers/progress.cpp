@@ -6,8 +6,13 @@ namespace granmc {
 
 ProgressLine::ProgressLine(std::uint64_t total_ticks, bool enabled) : total_(total_ticks), enabled_(enabled) {}
 
-ProgressLine::~ProgressLine() {
+ProgressLine::~ProgressLine() { finish(); }
+
+void ProgressLine::finish() {
+  const std::lock_guard lock(print_mutex_);
   if (printed_) std::fputc('\n', stderr);
+  printed_ = false;
+  enabled_ = false;
 }
 
 void ProgressLine::tick() {

@@ -13,6 +13,8 @@ class ProgressLine {
   ProgressLine(std::uint64_t total_ticks, bool enabled);
   ~ProgressLine();
   void tick();
+  /// Ends the progress line (if one was printed) so that later output starts on a fresh line.
+  void finish();
 
  private:
   using clock = std::chrono::steady_clock;
