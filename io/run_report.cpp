@@ -8,18 +8,6 @@
 namespace granmc {
 namespace {
 
-const char* method_spelling(Method method) noexcept {
-  switch (method) {
-    case Method::dsmc:
-      return "dsmc";
-    case Method::event:
-      return "event";
-    case Method::gillespie:
-      return "gillespie";
-  }
-  return "unknown";
-}
-
 void require_length(std::size_t got, std::size_t want, const char* what, std::size_t replica) {
   if (got != want)
     throw std::invalid_argument("run result: replica " + std::to_string(replica) + " has " + std::to_string(got) +
@@ -80,7 +68,7 @@ MeanCI temperature_ratio(const RunResult& result) {
 RunReport make_run_report(const Scene& scene, const RunResult& result, double wall_seconds) {
   check_shapes(result);
   RunReport report;
-  report.method = method_spelling(scene.run.method);
+  report.method = method_name(scene.run.method);
   report.wall_seconds = wall_seconds;
   report.temperature = per_time(
       result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; });

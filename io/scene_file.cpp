@@ -446,18 +446,6 @@ class Reader {
   const std::string& path_;
 };
 
-std::string_view method_name(Method m) {
-  switch (m) {
-    case Method::dsmc:
-      return "dsmc";
-    case Method::event:
-      return "event";
-    case Method::gillespie:
-      return "gillespie";
-  }
-  return "?";
-}
-
 void Reader::read_run(const Section& s, RunConfig& run) const {
   check_keys(s);
   run.method =

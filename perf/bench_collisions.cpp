@@ -113,25 +113,35 @@ GranmcGas& granmc_gas(std::int64_t n) {
   return *gas;
 }
 
-void granmc_stage(benchmark::State& bs) {
-  GranmcGas& g = granmc_gas(bs.range(0));
+/// Runs `collide` (one iteration of kCandidatesPerIteration candidates, returning its tally) on `gas`,
+/// rescaling outside the timed region as Dsmc does, and reports the rates. Shared by both subjects.
+template <class Gas, class Collide>
+void measure_stage(benchmark::State& bs, Gas& gas, Collide&& collide) {
   std::uint64_t candidates = 0, collisions = 0;
   for (auto _ : bs) {
-    CollisionTally tally;
-    collide_pair<HardSphere>(g.state, g.pair, g.omega_max, kCandidatesPerIteration, g.rng, tally);
-    ++g.state.step;
-    g.twice_energy -= tally.twice_energy_loss;
+    const auto tally = collide();
+    gas.twice_energy -= tally.twice_energy_loss;
     candidates += tally.candidates;
     collisions += tally.collisions;
-    if (g.needs_rescale()) {
+    if (gas.needs_rescale()) {
       bs.PauseTiming();
-      g.rescale();
+      gas.rescale();
       bs.ResumeTiming();
     }
   }
   bs.counters["candidates/s"] = benchmark::Counter(static_cast<double>(candidates), benchmark::Counter::kIsRate);
   bs.counters["collisions/s"] = benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
   bs.counters["acceptance"] = static_cast<double>(collisions) / static_cast<double>(candidates);
+}
+
+void granmc_stage(benchmark::State& bs) {
+  GranmcGas& g = granmc_gas(bs.range(0));
+  measure_stage(bs, g, [&g] {
+    CollisionTally tally;
+    collide_pair<HardSphere>(g.state, g.pair, g.omega_max, kCandidatesPerIteration, g.rng, tally);
+    ++g.state.step;
+    return tally;
+  });
 }
 
 // ---- naive reference -----------------------------------------------------------------------------
@@ -171,21 +181,7 @@ NaiveGas& naive_gas(std::int64_t n) {
 
 void naive_collide(benchmark::State& bs) {
   NaiveGas& g = naive_gas(bs.range(0));
-  std::uint64_t candidates = 0, collisions = 0;
-  for (auto _ : bs) {
-    const naive::NaiveTally tally = g.dsmc.collide(kCandidatesPerIteration);
-    g.twice_energy -= tally.twice_energy_loss;
-    candidates += tally.candidates;
-    collisions += tally.collisions;
-    if (g.needs_rescale()) {
-      bs.PauseTiming();
-      g.rescale();
-      bs.ResumeTiming();
-    }
-  }
-  bs.counters["candidates/s"] = benchmark::Counter(static_cast<double>(candidates), benchmark::Counter::kIsRate);
-  bs.counters["collisions/s"] = benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
-  bs.counters["acceptance"] = static_cast<double>(collisions) / static_cast<double>(candidates);
+  measure_stage(bs, g, [&g] { return g.dsmc.collide(kCandidatesPerIteration); });
 }
 
 // ---- the random draws alone ---------------------------------------------------------------------

@@ -21,6 +21,19 @@ enum class DtScaling { fixed, thermal };
 /// Where the observations fall: t_k = k t_end / samples, or geometrically from dt to t_end.
 enum class SampleSpacing { linear, log };
 
+/// The scene-file spelling of a method ("dsmc", "event", "gillespie").
+constexpr const char* method_name(Method m) noexcept {
+  switch (m) {
+    case Method::dsmc:
+      return "dsmc";
+    case Method::event:
+      return "event";
+    case Method::gillespie:
+      return "gillespie";
+  }
+  return "unknown";
+}
+
 struct RunConfig {
   Method method = Method::dsmc;
   std::uint64_t seed = 1;
