@@ -126,8 +126,12 @@ class Writer {
   void doubles(const std::string& path, std::span<const double> values, const std::string& description) {
     doubles(path, values, {values.size()}, description);
   }
+  void uint64s(const std::string& path, std::span<const std::uint64_t> values, const std::vector<hsize_t>& dims,
+               const std::string& description) {
+    dataset(path, H5T_NATIVE_UINT64, H5T_STD_U64LE, values.data(), dims, description);
+  }
   void uint64s(const std::string& path, std::span<const std::uint64_t> values, const std::string& description) {
-    dataset(path, H5T_NATIVE_UINT64, H5T_STD_U64LE, values.data(), {values.size()}, description);
+    uint64s(path, values, {values.size()}, description);
   }
 
   // Attributes of the object at `path` (a group or dataset; "/" is the root).
@@ -292,6 +296,13 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
   }
   w.group("/counters", "per-replica counters of the run");
   w.uint64s("/counters/candidates", candidates, "candidate pairs tested by each replica (count)");
+  std::vector<std::uint64_t> pair_collisions;
+  for (const ReplicaSeries& s : result.replicas)
+    pair_collisions.insert(pair_collisions.end(), s.pair_collisions.begin(), s.pair_collisions.end());
+  if (!pair_collisions.empty())
+    w.uint64s("/counters/pair_collisions", pair_collisions, {replicas, pair_collisions.size() / replicas},
+              "accepted collisions of each replica (rows) per ordered species pair (i, j) (columns, index "
+              "i * species + j), whole run (count)");
   w.uint64s("/counters/majorant_updates", majorant_updates,
             "times each replica raised its collision majorant omega_max (count)");
   w.uint64s("/counters/rescales", rescales, "velocity rescalings of each replica in long cooling runs (count)");

@@ -1,4 +1,4 @@
-// Throughput of the time-stepped DSMC collision stage (000 sec. 3): granmc's collide_pair<HardSphere>
+// Throughput of the time-stepped DSMC collision stage (000 sec. 3): granmc's collide_step<HardSphere>
 // against the naive scalar reference of perf/naive_dsmc.hpp, same N, same run.
 //
 // Gas: one species of inelastic hard spheres, alpha = 0.8, n = sigma = m = 1, Maxwellian start at T = 1,
@@ -138,7 +138,8 @@ void granmc_stage(benchmark::State& bs) {
   GranmcGas& g = granmc_gas(bs.range(0));
   measure_stage(bs, g, [&g] {
     CollisionTally tally;
-    collide_pair<HardSphere>(g.state, g.pair, g.omega_max, kCandidatesPerIteration, g.rng, tally);
+    collide_step<HardSphere>(g.state, {&g.pair, 1}, {&g.omega_max, 1}, {&kCandidatesPerIteration, 1}, g.rng,
+                             {&tally, 1});
     ++g.state.step;
     return tally;
   });

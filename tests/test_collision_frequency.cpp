@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "kernel/collide/enskog_chi.hpp"
 #include "kernel/observe/replica_statistics.hpp"
 #include "kernel/schemes/dispatch.hpp"
 
@@ -54,4 +55,39 @@ TEST(CollisionFrequency, EnskogChiMultipliesTheRate) {
   const MeanCI m = collision_count_ratio(phi, chi);
   std::printf("[ measured ] Enskog phi = 0.3: collisions / (N nu chi t / 2) = %.5f +- %.5f\n", m.mean, m.ci);
   EXPECT_NEAR(m.mean, 1.0, m.ci) << "ci " << m.ci;
+}
+
+TEST(CollisionFrequency, ElasticMixtureCollidesAtTheEnskogRatePerPair) {
+  // Each ordered pair (i, j) runs 1/2 N_i omega_max dt candidates (000 sec. 3), so at equilibrium it has
+  // 1/2 N_i n_j pi sigma_ij^2 chi_ij <g_ij> t collisions on average, <g_ij> = sqrt(8 T (1/m_i + 1/m_j) / pi).
+  Scene s;
+  s.run.seed = 99;
+  s.run.replicas = 8;
+  s.run.t_end = 4.0;
+  s.run.dt = 0.02;
+  s.run.samples = 1;
+  s.species = {{"a", 1.0, 1.0, 2.0, 8000}, {"b", 5.0, 2.0, 0.5, 2000}};
+  s.collision.restitution = {{{1.0, 1.0}, {1.0, 1.0}}};
+  s.collision.packing_fraction = 0.2;
+  const RunResult r = run_scene(s, {});
+  const std::vector<double> x{0.8, 0.2}, sigma{1.0, 2.0};
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const SpeciesConfig &a = s.species[i], &b = s.species[j];
+      const double sigma_ij = 0.5 * (a.diameter + b.diameter);
+      const double chi = enskog_chi(0.2, x, sigma, i, j);
+      std::vector<double> ratio;
+      for (const ReplicaSeries& rep : r.replicas) {
+        const double t0 = rep.temperature.front();  // both species start at the same temperature
+        const double mean_g = std::sqrt(8.0 * t0 * (1.0 / a.mass + 1.0 / b.mass) / std::numbers::pi);
+        const double expected =
+            0.5 * a.particles * b.density * std::numbers::pi * sigma_ij * sigma_ij * chi * mean_g * s.run.t_end;
+        ratio.push_back(rep.pair_collisions[i * 2 + j] / expected);
+      }
+      const MeanCI m = replica_mean(ratio);
+      std::printf("[ measured ] pair (%d, %d): collisions / expected = %.5f +- %.5f\n", i, j, m.mean, m.ci);
+      EXPECT_NEAR(m.mean, 1.0, m.ci) << "pair " << i << ", " << j;
+      EXPECT_LT(m.ci, 0.02);
+    }
+  }
 }

@@ -27,7 +27,6 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       PairCoefficients p;
       p.i = i;
       p.j = j;
-      p.rng_sub = static_cast<std::uint16_t>(i * 16 + j);
       p.rate_prefactor = 4.0 * std::numbers::pi * sigma_ij * sigma_ij * b.density * chi;
       p.mu_ji = b.mass / (a.mass + b.mass);
       p.mu_ij = a.mass / (a.mass + b.mass);

@@ -9,7 +9,6 @@ namespace granmc {
 
 struct PairCoefficients {
   int i = 0, j = 0;              // species of particle k and of particle l
-  std::uint16_t rng_sub = 0;     // random-stream sub-identifier of the pair
   double rate_prefactor = 0.0;   // 4 pi sigma_ij^2 n_j chi_ij (000 sec. 3): omega_kl / |g.sigma|
   double mu_ji = 0.0;            // m_j / (m_i + m_j), moves particle k (000 eq. 14)
   double mu_ij = 0.0;            // m_i / (m_i + m_j), moves particle l (000 eq. 15)

@@ -9,7 +9,7 @@ namespace granmc {
 
 enum class RngPurpose : std::uint16_t {
   initial_velocity = 1,  // sub = species, step = 0, index = particle
-  collision_pair = 2,    // sub = species pair i * 16 + j, step = time step, index = block of a candidate
+  collision_pair = 2,    // sub = 0, step = time step, index = 2 s and 2 s + 1 for candidate s of the step
 };
 
 }  // namespace granmc

@@ -21,6 +21,8 @@ struct ReplicaSeries {
   std::vector<Vec3> momentum;              // total momentum sum_i m_i sum_k V_k (scene units)
   std::vector<double> momentum_relative;   // |P| / sqrt(M_total 2 E_kin): centre-of-mass speed / rms speed
   std::vector<double> collisions;          // accepted collisions since t = 0, at each sample
+  std::vector<std::uint64_t> pair_collisions;  // accepted collisions per ordered species pair (i, j),
+                                               // in the order i * species + j, whole run
   std::uint64_t candidates = 0;            // candidate pairs tested
   std::uint64_t majorant_updates = 0;      // times omega_max was raised (000 sec. 3)
   std::uint64_t rescales = 0;              // velocity rescalings (long cooling runs)

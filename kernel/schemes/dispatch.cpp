@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "kernel/collide/hard_sphere.hpp"
+#include "kernel/effects/gaussian_thermostat.hpp"
 #include "kernel/schemes/dsmc_replica.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 
@@ -10,10 +11,12 @@ namespace granmc {
 
 namespace {
 
-// The supported instantiations. Every scene outside this list is refused at start-up.
+// The supported instantiations. Every scene outside this list is refused at start-up. One or two
+// species and the Enskog chi need no instantiation of their own: both only change the pair constants.
 constexpr const char* supported_list =
-    "supported: method = \"dsmc\" with kernel = \"hard-sphere\", one species, thermostat kind = \"none\", "
-    "shear rate = 0, relaxation disabled, any packing_fraction in [0, 1) (Enskog chi)";
+    "supported: method = \"dsmc\" with kernel = \"hard-sphere\", one or two species, any packing_fraction in "
+    "[0, 1) (Enskog chi), thermostat kind = \"none\" or \"gaussian\" (a fixed zeta or \"cooling-rate\"), "
+    "shear rate = 0, relaxation disabled";
 
 }  // namespace
 
@@ -21,8 +24,8 @@ std::string unsupported_reason(const Scene& scene) {
   std::string what;
   if (scene.run.method != Method::dsmc) what = "run.method other than \"dsmc\"";
   else if (scene.collision.kernel != CollisionKernel::hard_sphere) what = "collision.kernel other than \"hard-sphere\"";
-  else if (scene.species.size() != 1) what = "more than one [[species]]";
-  else if (scene.thermostat.kind != ThermostatKind::none) what = "a [thermostat]";
+  else if (scene.species.empty() || scene.species.size() > 2) what = "a scene without one or two [[species]]";
+  else if (scene.thermostat.kind == ThermostatKind::white_noise) what = "the white-noise [thermostat]";
   else if (scene.shear_rate != 0.0) what = "a [shear] rate";
   else if (scene.relaxation) what = "the [relaxation] term";
   if (what.empty()) return {};
@@ -30,12 +33,20 @@ std::string unsupported_reason(const Scene& scene) {
 }
 
 std::string instantiation_name(const Scene& scene) {
-  return scene.collision.packing_fraction > 0.0 ? "dsmc<hard-sphere>, Enskog chi in the pair rate"
-                                                : "dsmc<hard-sphere>";
+  std::string name = scene.thermostat.kind == ThermostatKind::gaussian ? "dsmc<hard-sphere, gaussian-thermostat>"
+                                                                       : "dsmc<hard-sphere>";
+  if (scene.collision.packing_fraction > 0.0) name += ", Enskog chi in the pair rates";
+  return name;
 }
 
 RunResult run_scene(const Scene& scene, const RunOptions& options) {
   if (const std::string why = unsupported_reason(scene); !why.empty()) throw std::invalid_argument(why);
+  if (scene.thermostat.kind == ThermostatKind::gaussian) {
+    const GaussianThermostat thermostat{scene.thermostat.zeta_is_cooling_rate, scene.thermostat.zeta};
+    return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+      return run_dsmc_replica<HardSphere>(scene, replica, times, options, thermostat);
+    });
+  }
   return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
     return run_dsmc_replica<HardSphere>(scene, replica, times, options);
   });

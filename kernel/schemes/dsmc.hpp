@@ -4,13 +4,14 @@
 // A step of length dt runs the free-flight effects the scene named, then the collision stage for every
 // ordered species pair (i, j) with 1/2 N_i omega_max^(ij) dt candidates (the fractional part carried to
 // the next step), then the post-collision effects. `Kernel` is the collision-rate evaluator
-// (collide/), `Effects` the evaluator structs of effects/: each has `static constexpr StepPhase phase`
-// and `void apply(GasState&, const StepContext&) noexcept`; an effect the scene does not name is not in
-// the pack and costs nothing. One file, schemes/dispatch.cpp, chooses the instantiation.
+// (collide/), `Effects` the evaluator structs of effects/ (effects/step_context.hpp says what they
+// look like); an effect the scene does not name is not in the pack and costs nothing. One file,
+// schemes/dispatch.cpp, chooses the instantiation.
 //
 // Long cooling runs never underflow: the stored velocities are rescaled to unit temperature (and the
 // centre-of-mass velocity removed) whenever the stored energy has drifted by a factor
 // `rescale_factor`, with the scale kept as log u (core/velocity_scale.hpp).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -22,20 +23,13 @@
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/scene.hpp"
+#include "kernel/effects/step_context.hpp"
 #include "kernel/observe/gas_observation.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
 
 namespace granmc {
-
-enum class StepPhase { free_flight, after_collisions };
-
-/// What an effect may need to know about the step it acts in.
-struct StepContext {
-  double dt = 0.0;                      // step length, scene time
-  const CollisionTally* tally = nullptr;  // this step's collisions (after_collisions phase)
-};
 
 template <class Kernel, class... Effects>
 class Dsmc {
@@ -65,11 +59,16 @@ class Dsmc {
     for (const PairCoefficients& p : pairs_) {
       omega_max_.push_back(p.rate_prefactor * (max_speed[p.i] + max_speed[p.j]));
       carried_.push_back(0.0);
+      pair_totals_.emplace_back();
+      step_tallies_.emplace_back();
+      candidates_.push_back(0);
     }
   }
 
   [[nodiscard]] const GasState& state() const noexcept { return state_; }
   [[nodiscard]] const CollisionTally& tally() const noexcept { return total_; }
+  /// Totals per ordered species pair, in the order of pair_coefficients(scene).
+  [[nodiscard]] const std::vector<CollisionTally>& pair_tallies() const noexcept { return pair_totals_; }
   [[nodiscard]] std::uint64_t rescales() const noexcept { return rescales_; }
   [[nodiscard]] double momentum_removed_relative() const noexcept { return momentum_removed_; }
   [[nodiscard]] const std::vector<double>& omega_max() const noexcept { return omega_max_; }
@@ -94,43 +93,57 @@ class Dsmc {
   }
 
   void step(double dt) {
-    const StepContext free_flight{dt, nullptr};
-    run_phase<StepPhase::free_flight>(free_flight);
+    run_phase<StepPhase::free_flight>({dt, twice_energy_, 0.0});
 
-    CollisionTally tally;
     const double u_dt = std::exp(state_.scale.log_u + std::log(dt));
     for (std::size_t q = 0; q < pairs_.size(); ++q) {
       const PairCoefficients& p = pairs_[q];
       const double n_i = static_cast<double>(state_.species[p.i].size());
-      if (p.i == p.j && n_i < 2.0) continue;
+      if (p.i == p.j && n_i < 2.0) continue;  // no partner within a species of one particle
       const double wanted = 0.5 * n_i * omega_max_[q] * u_dt + carried_[q];  // 1/2 N_i omega_max dt
-      if (!(wanted < static_cast<double>(RandomStream::counter_limit / 2)))
+      if (!(wanted < static_cast<double>(RandomStream::counter_limit / 8)))
         throw std::runtime_error("time step too large: " + std::to_string(wanted) +
                                  " collision candidates in one step; reduce run.dt");
       const double whole = std::floor(wanted);
       carried_[q] = wanted - whole;
-      collide_pair<Kernel>(state_, p, omega_max_[q], static_cast<std::uint64_t>(whole), rng_, tally);
+      candidates_[q] = static_cast<std::uint64_t>(whole);
+    }
+    std::fill(step_tallies_.begin(), step_tallies_.end(), CollisionTally{});
+    collide_step<Kernel>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_);
+    CollisionTally tally;
+    for (std::size_t q = 0; q < pairs_.size(); ++q) {
+      add(pair_totals_[q], step_tallies_[q]);
+      add(tally, step_tallies_[q]);
     }
     twice_energy_ -= tally.twice_energy_loss;
-
-    const StepContext after{dt, &tally};
-    run_phase<StepPhase::after_collisions>(after);
-
-    total_.candidates += tally.candidates;
-    total_.collisions += tally.collisions;
-    total_.majorant_updates += tally.majorant_updates;
-    total_.twice_energy_loss += tally.twice_energy_loss;
+    run_phase<StepPhase::after_collisions>({dt, twice_energy_, tally.twice_energy_loss});
+    add(total_, tally);
     ++state_.step;
     if (twice_energy_ < reference_twice_energy_ / rescale_factor ||
         twice_energy_ > reference_twice_energy_ * rescale_factor)
       rescale();
   }
 
-  template <StepPhase phase>
-  void run_phase(const StepContext& ctx) noexcept {
-    std::apply([&](auto&... e) { ((std::decay_t<decltype(e)>::phase == phase ? e.apply(state_, ctx) : void()), ...); },
-               effects_);
+  static void add(CollisionTally& to, const CollisionTally& from) noexcept {
+    to.candidates += from.candidates;
+    to.collisions += from.collisions;
+    to.majorant_updates += from.majorant_updates;
+    to.twice_energy_loss += from.twice_energy_loss;
   }
+
+  /// Runs the effects of one phase in pack order, each seeing the stored energy its predecessors left.
+  template <StepPhase phase>
+  void run_phase(StepContext ctx) noexcept {
+    auto run_one = [&](auto& effect) {
+      if constexpr (std::decay_t<decltype(effect)>::phase == phase) {
+        twice_energy_ += effect.apply(state_, ctx);
+        ctx.twice_energy = twice_energy_;
+      }
+    };
+    std::apply([&](auto&... effect) { (run_one(effect), ...); }, effects_);
+  }
+
+
 
   /// Removes the centre-of-mass velocity and rescales the stored velocities to unit mean temperature,
   /// moving the scale into log u. omega_max stays in stored units: the majorant estimate follows the
@@ -154,7 +167,10 @@ class Dsmc {
   GasState state_;
   std::vector<double> omega_max_;  // per ordered pair, units of u
   std::vector<double> carried_;    // fractional candidates carried to the next step
+  std::vector<std::uint64_t> candidates_;  // this step's candidates per pair
   CollisionTally total_;
+  std::vector<CollisionTally> pair_totals_;
+  std::vector<CollisionTally> step_tallies_;  // this step's, per pair
   double total_particles_ = 0.0;
   double twice_energy_ = 0.0;            // tracked sum_i m_i sum_k |c_k|^2
   double reference_twice_energy_ = 0.0;  // its value after the last rescaling

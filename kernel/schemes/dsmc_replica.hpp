@@ -21,6 +21,7 @@ ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const 
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
     if (options.on_sample) options.on_sample();
   }
+  for (const CollisionTally& pair : sim.pair_tallies()) series.pair_collisions.push_back(pair.collisions);
   series.candidates = sim.tally().candidates;
   series.majorant_updates = sim.tally().majorant_updates;
   series.rescales = sim.rescales();

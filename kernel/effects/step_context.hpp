@@ -1,0 +1,30 @@
+#pragma once
+// What every free-flight effect sees. An effect is an evaluator struct (DESIGN.md, conventions 1 and 3):
+//
+//   struct MyEffect {
+//     static constexpr StepPhase phase = StepPhase::...;   // when in the step it acts
+//     Params ...;                                          // its parameters, from the scene
+//     double apply(GasState& state, const StepContext& step) noexcept;
+//   };
+//
+// apply returns the change it made to sum_i m_i sum_k |c_k|^2 in stored units (0 for an effect that only
+// moves the velocity scale u), so the step's energy bookkeeping, which drives the rescaling and the
+// thermal time step, stays exact without a pass over the particles.
+//
+// Dsmc<Kernel, Effects...> runs, in each step, the free_flight effects, the collision stage, then the
+// after_collisions effects, each in the order of the pack. An effect the scene does not name is not in
+// the pack: it costs nothing.
+#include "kernel/schemes/gas_state.hpp"
+
+namespace granmc {
+
+enum class StepPhase { free_flight, after_collisions };
+
+struct StepContext {
+  double dt = 0.0;                 // step length, scene time
+  double twice_energy = 0.0;       // sum_i m_i sum_k |c_k|^2 (stored units) now
+  double twice_energy_loss = 0.0;  // lost in this step's collision stage (0 in the free_flight phase):
+                                   // before the collisions the stored energy was twice_energy + this
+};
+
+}  // namespace granmc
