@@ -6,7 +6,7 @@ PYTHON ?= /usr/bin/python3
 JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
-.PHONY: all setup configure build run test bench clean hcs-alpha08
+.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-3 fig-000-4 fig-000-5 figures-000
 
 all: build
 
@@ -32,6 +32,13 @@ hcs-alpha08: build
 	$(GRANMC) run drivers/scenes/hcs_alpha08.toml --out results/hcs_alpha08.h5 --summary results/hcs_alpha08.json
 	$(PYTHON) drivers/plot_cooling.py results/hcs_alpha08.h5 results/hcs_alpha08.png
 	$(PYTHON) drivers/cooling_table.py results/hcs_alpha08.h5
+
+# Paper 000's figures (drivers/figure.py; results/000_fig<k>/figure.png, table.md). Runs are cached per
+# point: a second call only redoes the theory and the plot. Runtimes in docs/validation.md.
+fig-000-1 fig-000-3 fig-000-4 fig-000-5: fig-000-%: build
+	$(PYTHON) drivers/figure.py drivers/scenes/000_fig$*/figure.toml --granmc $(GRANMC)
+
+figures-000: fig-000-1 fig-000-3 fig-000-4 fig-000-5
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure

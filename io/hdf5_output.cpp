@@ -254,6 +254,9 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
       w.attribute(path, "particles", static_cast<std::int64_t>(scene.species[i].particles));
       w.attribute(path, "mass", scene.species[i].mass);
     }
+    // a2 over the last half of the samples, per-replica time average then replica mean (as temperature_ratio).
+    w.attribute(path, "a2_last_half_mean", sp.a2_last_half.mean);
+    w.attribute(path, "a2_last_half_ci", sp.a2_last_half.ci);
     write_series(w, path + "/temperature", sp.temperature,
                  replica_rows(
                      result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].temperature; }),

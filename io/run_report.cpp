@@ -48,16 +48,16 @@ MeanCISeries per_time(const RunResult& result, Pick pick) {
   return out;
 }
 
-/// T_1/T_2 averaged over samples k >= (S-1)/2 in each replica, then over replicas. The ratio is taken as
-/// exp(ln T_1 - ln T_2), which stays finite when both temperatures underflow in a long cooling run.
-MeanCI temperature_ratio(const RunResult& result) {
+/// value(series, k) averaged over the samples k >= (S-1)/2 in each replica (the last half of the run,
+/// where a heated or scaled cooling state is stationary), then over replicas.
+template <class Value>
+MeanCI last_half_average(const RunResult& result, Value value) {
   const std::size_t samples = result.times.size();
   const std::size_t first = (samples - 1) / 2;  // k >= samples/2 with samples = S - 1 intervals
   std::vector<double> per_replica;
   for (const ReplicaSeries& s : result.replicas) {
     CompensatedSum sum;
-    for (std::size_t k = first; k < samples; ++k)
-      sum.add(std::exp(s.species[0].log_temperature[k] - s.species[1].log_temperature[k]));
+    for (std::size_t k = first; k < samples; ++k) sum.add(value(s, k));
     per_replica.push_back(sum.value() / static_cast<double>(samples - first));
   }
   return replica_mean(per_replica);
@@ -83,6 +83,8 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
         result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].temperature; });
     sp.a2 = per_time(
         result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a2; });
+    sp.a2_last_half =
+        last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a2[k]; });
     report.species.push_back(std::move(sp));
   }
   for (const ReplicaSeries& s : result.replicas) {
@@ -91,7 +93,11 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
     report.majorant_updates += s.majorant_updates;
     report.rescales += s.rescales;
   }
-  if (result.species_names.size() == 2 && !result.times.empty()) report.temperature_ratio = temperature_ratio(result);
+  // T_1/T_2 as exp(ln T_1 - ln T_2), finite when both temperatures underflow in a long cooling run.
+  if (result.species_names.size() == 2 && !result.times.empty())
+    report.temperature_ratio = last_half_average(result, [](const ReplicaSeries& s, std::size_t k) {
+      return std::exp(s.species[0].log_temperature[k] - s.species[1].log_temperature[k]);
+    });
   report.theory = theory::cooling_state(scene, result.times);
   return report;
 }

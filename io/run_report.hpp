@@ -28,6 +28,7 @@ struct SpeciesReport {
   std::string name;
   MeanCISeries temperature;  // T_i(t) = m_i <V^2> / 3, energy units
   MeanCISeries a2;           // (3/5) <V^4>/<V^2>^2 - 1, dimensionless
+  MeanCI a2_last_half;       // a2 over the last half of the samples (as temperature_ratio)
 };
 
 struct RunReport {

@@ -49,7 +49,10 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
   j["momentum_relative"] = mean_ci(report.momentum_relative);
   nlohmann::json species = nlohmann::json::array();
   for (const SpeciesReport& sp : report.species)
-    species.push_back({{"name", sp.name}, {"temperature", mean_ci(sp.temperature)}, {"a2", mean_ci(sp.a2)}});
+    species.push_back({{"name", sp.name},
+                       {"temperature", mean_ci(sp.temperature)},
+                       {"a2", mean_ci(sp.a2)},
+                       {"a2_last_half", mean_ci(sp.a2_last_half)}});
   j["species"] = std::move(species);
   if (report.temperature_ratio) j["temperature_ratio"] = mean_ci(*report.temperature_ratio);
   if (report.theory) {

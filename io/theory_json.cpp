@@ -31,6 +31,19 @@ nlohmann::json scene_theory_json(const Scene& scene) {
     j["times"] = times;
     j["cooling_state"] = cooling_state_json(*hcs);
   }
+  if (const auto s = theory::scaled_state(scene)) {
+    applies.push_back("scaled homogeneous cooling state (HCS, or HSS with the Gaussian thermostat): Sonine a2, a3");
+    j["scaled_state"] = {{"a2", s->a2},
+                         {"a2_model_error", s->a2_model_error},
+                         {"a2_second_sonine", s->a2_second_sonine},
+                         {"a3_second_sonine", s->a3_second_sonine}};
+  }
+  if (const auto m = theory::mixture_state(scene)) {
+    applies.push_back("binary mixture, HCS or HSS: temperature ratio and a2_i (docs/derivations/mixture-hcs.md)");
+    j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell},
+                    {"temperature_ratio_sonine", m->temperature_ratio_sonine},
+                    {"a2_sonine", {m->a2_sonine[0], m->a2_sonine[1]}}};
+  }
   if (scene.thermostat.kind == ThermostatKind::white_noise && scene.species.size() == 1 &&
       scene.collision.kernel == CollisionKernel::hard_sphere) {
     applies.push_back("white-noise heated steady state, monodisperse hard spheres: first-Sonine a2");

@@ -5,9 +5,9 @@ temperature ratio gamma = T_1/T_2 and cumulants a2_i (c_i = 2 a2_i of paper 000)
 the linear first-Sonine approximations.
 
 Run with /usr/bin/python3 (needs sympy, numpy, scipy).  Derivation: docs/derivations/mixture-hcs.md.
-    python3 mixture_hcs.py           symbolic derivation, exact checks, tables (about 30 s)
+    python3 mixture_hcs.py           symbolic derivation, exact checks, tables (about 6 s)
     python3 mixture_hcs.py --quad    independent deterministic quadrature of every coefficient
-    python3 mixture_hcs.py --mc      independent Monte Carlo of every coefficient
+    python3 mixture_hcs.py --mc      independent Monte Carlo of every coefficient (about 2 min)
 
 Species i has f_i(v) = n_i phi_i(v) [1 + a_i S2(v^2 / (2 theta_i))], theta_i = T_i / m_i,
 phi_i = (2 pi theta_i)^(-3/2) exp(-v^2 / (2 theta_i)), S2(x) = x^2/2 - 5x/2 + 15/8; then
@@ -20,8 +20,8 @@ The collisional moment of species i due to j (000 eq. 2 with uniform chi_ij):
                (|v1'|^p - |v1|^p),          v1' = v1 - mu_ji (1 + alpha_ij) (sig.g) sig,  g = v1 - v2.
 
 Decorrelated coordinates (the point of the calculation).  v1 ~ N(0, theta_i), v2 ~ N(0, theta_j)
-independently.  The mass centre mu_ij v1 + mu_ji v2 is correlated with g unless theta_i = theta_j, so the
-one-component trick does not factorise.  The pair
+independently.  The mass centre mu_ij v1 + mu_ji v2 has covariance (T_i - T_j)/(m_i + m_j) with g per
+component, so the one-component trick does not factorise when T_i != T_j.  The pair
     g = v1 - v2 ~ N(0, s^2),   G = (theta_j v1 + theta_i v2) / s^2 ~ N(0, theta_i theta_j / s^2),
     s^2 = theta_i + theta_j,
 IS independent (Cov(G, g) = (theta_j theta_i - theta_i theta_j)/s^2 = 0), with unit Jacobian and
@@ -277,6 +277,11 @@ def vne(al):
     return 16 * (1 - al) * (1 - 2 * al**2) / (81 - 17 * al + 30 * al**2 * (1 - al))
 
 
+def f5(x):
+    """5-decimal string without a negative zero."""
+    return f"{round(x, 5) + 0.0:.5f}"
+
+
 def tables(NUM):
     hdr = "| alpha | gamma Maxwell | gamma Sonine | c_1 | c_2 | gamma exact-bilinear | c_1 exact-bilinear | c_2 exact-bilinear |"
     sep = "|---|---|---|---|---|---|---|---|"
@@ -285,8 +290,8 @@ def tables(NUM):
         gm, _ = hcs(NUM, mix, "maxwell")
         gs, a = hcs(NUM, mix, "linear")
         ge, ae = hcs(NUM, mix, "exact")
-        return (f"| {al:.2f} | {gm:.5f} | {gs:.5f} | {2 * a[0]:.5f} | {2 * a[1]:.5f} | {ge:.5f} | "
-                f"{2 * ae[0]:.5f} | {2 * ae[1]:.5f} |")
+        return (f"| {al:.2f} | {f5(gm)} | {f5(gs)} | {f5(2 * a[0])} | {f5(2 * a[1])} | {f5(ge)} | "
+                f"{f5(2 * ae[0])} | {f5(2 * ae[1])} |")
 
     alphas = [0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95, 1.0]
     print("\n### Fig. 1: mu = 2, omega = 1, delta = 1, phi = 0 (one component: c = 2 a2_vNE)\n")
@@ -295,7 +300,7 @@ def tables(NUM):
     for al in alphas:
         mix = Mixture(2, 1, 1, al)
         r = row(mix, al).split("|")
-        print("|" + "|".join(r[1:6]) + f"| {2 * vne(al):.5f} |" + "|".join(r[6:]))
+        print("|" + "|".join(r[1:6]) + f"| {f5(2 * vne(al))} |" + "|".join(r[6:]))
     for mu in (0.1, 2, 10):
         print(f"\n### Fig. 3: omega = 1, delta = 2, phi = 0, mu = {mu}\n")
         print(hdr)
@@ -320,8 +325,8 @@ def tables(NUM):
             gm, _ = hcs(NUM, mix, "maxwell")
             gs, a = hcs(NUM, mix, "linear")
             c = mix.chi
-            print(f"| {phi:.1f} | {c[0][0]:.5f} | {c[0][1]:.5f} | {c[1][1]:.5f} | {gm:.5f} | {gs:.5f} | "
-                  f"{gm / g0m:.5f} | {gs / g0s:.5f} | {2 * a[0]:.5f} | {2 * a[1]:.5f} |")
+            print(f"| {phi:.1f} | {f5(c[0][0])} | {f5(c[0][1])} | {f5(c[1][1])} | {f5(gm)} | {f5(gs)} | "
+                  f"{f5(gm / g0m)} | {f5(gs / g0s)} | {f5(2 * a[0])} | {f5(2 * a[1])} |")
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -554,6 +559,14 @@ def main():
         gs, a = hcs(NUM, mix, "linear")
         print(f"mu, omega, delta, alpha = {args}: gamma_M = {gm:.15g}, gamma_S = {gs:.15g},"
               f" a2 = ({a[0]:.15g}, {a[1]:.15g})")
+    # exact collisional moments for tests/test_mixture_hcs.cpp (CollisionalMomentsFromExactDerivation)
+    masses, temps, al_, avals = [2, 1], [sp.Rational(13, 10), 1], sp.Rational(7, 10), [sp.Rational(3, 10), sp.Rational(-1, 5)]
+    for i, j in ((0, 1), (1, 0), (0, 0)):
+        thi, thj = sp.Rational(temps[i]) / masses[i], sp.Rational(temps[j]) / masses[j]
+        sub = {u: thi / (thi + thj), b: sp.Rational(masses[j], masses[i] + masses[j]) * (1 + al_), ai: avals[i], aj: avals[j]}
+        for p, P in ((2, P2), (4, P4)):
+            val = 2 * sp.sqrt(2 * sp.pi) * (thi + thj) ** sp.Rational(p + 1, 2) * P.subs(sub)
+            print(f"Psi_{p}^({i}{j}) at m = (2, 1), T = (1.3, 1), alpha = 0.7, a2 = (0.3, -0.2): {sp.N(val, 17)}")
     tables(NUM)
 
 

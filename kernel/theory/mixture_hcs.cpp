@@ -23,10 +23,10 @@ struct PairPoly {
 
 /// Geometry of the pair (i, j) at temperatures T[0], T[1].
 struct Pair {
-  double s;       // s = sqrt(theta_i + theta_j), theta = T/m
-  double u, v;    // u = theta_i / s^2, v = 1 - u = theta_j / s^2 (computed separately, no cancellation)
-  double b;       // b = mu_ji (1 + alpha_ij)
-  double d;       // d = 2u - b = 2 (T_i - T_j)/((m_i + m_j) s^2) + mu_ji (1 - alpha_ij): vanishes at elastic equilibrium
+  double s;     // s = sqrt(theta_i + theta_j), theta = T/m
+  double u, v;  // u = theta_i / s^2, v = 1 - u = theta_j / s^2 (computed separately, no cancellation)
+  double b;     // b = mu_ji (1 + alpha_ij)
+  double d;     // d = 2u - b = 2 (T_i - T_j)/((m_i + m_j) s^2) + mu_ji (1 - alpha_ij): vanishes at elastic equilibrium
   double weight;  // n_j sigma_ij^2 chi_ij
   double theta_i;
 };
@@ -71,8 +71,8 @@ PairPoly p4(const Pair& q) {
   const double c01 =
       -b * v * v * (-30.0 * b3 + 24.0 * b2 * u + 9.0 * b * u2 - 15.0 * b * u + 6.0 * u3 - 10.0 * u2) / 2.0;
   const double c11 = -b * u2 * v * v *
-                     (30.0 * b3 + 72.0 * b2 * u - 96.0 * b2 + 135.0 * b * u2 - 261.0 * b * u + 132.0 * b +
-                      210.0 * u3 - 510.0 * u2 + 384.0 * u - 80.0) /
+                     (30.0 * b3 + 72.0 * b2 * u - 96.0 * b2 + 135.0 * b * u2 - 261.0 * b * u + 132.0 * b + 210.0 * u3 -
+                      510.0 * u2 + 384.0 * u - 80.0) /
                      16.0;
   return {c00, c10, c01, c11};
 }

@@ -4,10 +4,57 @@
 #include <numbers>
 
 #include "kernel/collide/enskog_chi.hpp"
+#include "kernel/theory/mixture_hcs.hpp"
 #include "kernel/theory/sonine.hpp"
 #include "kernel/theory/sonine_hcs.hpp"
 
 namespace granmc::theory {
+
+namespace {
+
+/// A homogeneous hard-sphere DSMC scene whose scaled state is the HCS one (no shear, no relaxation,
+/// no white noise).
+bool hcs_scaled_state(const Scene& scene) {
+  return scene.run.method == Method::dsmc && scene.collision.kernel == CollisionKernel::hard_sphere &&
+         scene.thermostat.kind != ThermostatKind::white_noise && scene.shear_rate == 0.0 && !scene.relaxation;
+}
+
+}  // namespace
+
+std::optional<ScaledStatePrediction> scaled_state(const Scene& scene) {
+  if (scene.species.size() != 1 || !hcs_scaled_state(scene)) return std::nullopt;
+  const double alpha = scene.collision.restitution[0][0];
+  const SecondSonine second = hcs_second_sonine(alpha);
+  return ScaledStatePrediction{hcs_a2(alpha), hcs_a2_model_error(alpha), second.a2, second.a3};
+}
+
+std::optional<MixturePrediction> mixture_state(const Scene& scene) {
+  if (scene.species.size() != 2 || !hcs_scaled_state(scene)) return std::nullopt;
+  MixtureParameters mp{};
+  const double n = total_density(scene);
+  std::vector<double> x, sigma;
+  for (const SpeciesConfig& s : scene.species) {
+    x.push_back(s.density / n);
+    sigma.push_back(s.diameter);
+  }
+  MixturePrediction p;
+  for (int i = 0; i < 2; ++i) {
+    mp.mass[i] = scene.species[i].mass;
+    mp.diameter[i] = scene.species[i].diameter;
+    mp.density[i] = scene.species[i].density;
+    for (int j = 0; j < 2; ++j) {
+      mp.alpha[i][j] = scene.collision.restitution[i][j];
+      p.chi[i][j] = mp.chi[i][j] =
+          scene.collision.packing_fraction > 0.0 ? enskog_chi(scene.collision.packing_fraction, x, sigma, i, j) : 1.0;
+    }
+  }
+  p.temperature_ratio_maxwell = temperature_ratio_maxwell(mp);
+  const MixtureSonine sonine = mixture_first_sonine(mp);
+  p.temperature_ratio_sonine = sonine.gamma;
+  p.a2_sonine[0] = sonine.a2[0];
+  p.a2_sonine[1] = sonine.a2[1];
+  return p;
+}
 
 std::optional<CoolingStatePrediction> cooling_state(const Scene& scene, const std::vector<double>& times) {
   if (scene.species.size() != 1 || scene.run.method != Method::dsmc ||

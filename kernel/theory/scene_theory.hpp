@@ -26,4 +26,24 @@ struct CoolingStatePrediction {
 /// The HCS prediction if the scene is a monodisperse hard-sphere cooling state, else nothing.
 std::optional<CoolingStatePrediction> cooling_state(const Scene& scene, const std::vector<double>& times);
 
+/// The scaled state of the HCS, which the Gaussian-thermostat HSS shares (000 sec. 2): one species.
+struct ScaledStatePrediction {
+  double a2 = 0.0;                // first Sonine (van Noije and Ernst 1998)
+  double a2_model_error = 0.0;    // |second - first Sonine a2|
+  double a2_second_sonine = 0.0;  // docs/derivations/sonine-hcs.md
+  double a3_second_sonine = 0.0;
+};
+
+/// Two species: temperature ratio and a2_i (docs/derivations/mixture-hcs.md).
+struct MixturePrediction {
+  double temperature_ratio_maxwell = 1.0;  // gamma = T_1/T_2 from zeta_1 = zeta_2, Maxwellians
+  double temperature_ratio_sonine = 1.0;   // gamma with the first-Sonine corrections
+  double a2_sonine[2] = {0.0, 0.0};        // first-Sonine a2_i (c_i = 2 a2_i, 000 Fig. 1)
+  double chi[2][2] = {{1.0, 1.0}, {1.0, 1.0}};
+};
+
+/// For a hard-sphere DSMC scene without shear or relaxation, cooling or with a Gaussian thermostat.
+std::optional<ScaledStatePrediction> scaled_state(const Scene& scene);
+std::optional<MixturePrediction> mixture_state(const Scene& scene);
+
 }  // namespace granmc::theory

@@ -1,0 +1,271 @@
+#!/usr/bin/env python3
+"""Reproduce a paper figure: run granmc over a parameter sweep, compare with theory, plot, tabulate.
+
+Usage: /usr/bin/python3 drivers/figure.py FIGURE.toml [--granmc build/bin/granmc] [--out results/NAME]
+                                          [--threads N] [--only-theory]
+
+A figure file (drivers/scenes/<paper>_fig<k>/figure.toml) names a base scene (a valid granmc scene in the
+same folder), the swept parameter, its simulated values, the curves (per curve: species overrides,
+`set` of dotted scene keys, or a base scene of its own) and what is plotted. For every simulated point the script writes the scene to OUT/points/, runs
+`granmc run` unless OUT/points/<point>.json already holds the result of exactly that scene text, and
+reads the summary. Theory lines come from `granmc theory` on a fine grid. Output: OUT/figure.png,
+OUT/table.md (simulation with CI against theory) and OUT/figure.json (all numbers).
+
+Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.packing_fraction).
+Plotted quantities (y): "temperature_ratio" (gamma = T_1/T_2), "temperature_ratio_relative"
+(gamma(x)/gamma(x = 0) of the same curve, 000 Fig. 5), "cumulants" (c_i = 2 a2_i per species, 000 Fig. 1).
+"""
+import argparse
+import copy
+import json
+import os
+import subprocess
+import sys
+import tomllib
+
+import numpy as np
+
+
+# ---- scenes ---------------------------------------------------------------------------------------------
+
+def toml_value(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, float)):
+        return repr(v)
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, list):
+        return "[" + ", ".join(toml_value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{ " + ", ".join(f"{k} = {toml_value(x)}" for k, x in v.items()) + " }"
+    raise TypeError(f"cannot write {v!r} to TOML")
+
+
+def toml_text(scene):
+    """A scene dict (tables, an array of [[species]] tables, plain values) as TOML text."""
+    lines = []
+    for table, body in scene.items():
+        if table == "species":
+            for sp in body:
+                lines.append("[[species]]")
+                lines += [f"{k} = {toml_value(v)}" for k, v in sp.items()]
+                lines.append("")
+        else:
+            lines.append(f"[{table}]")
+            lines += [f"{k} = {toml_value(v)}" for k, v in body.items()]
+            lines.append("")
+    return "\n".join(lines)
+
+
+def point_scene(bases, curve, x_name, x):
+    scene = copy.deepcopy(bases[curve.get("base", "")])
+    for sp, override in zip(scene["species"], curve.get("species", [])):
+        sp.update(override)
+    for dotted, value in curve.get("set", {}).items():  # e.g. "collision.restitution" = 0.6
+        table, key = dotted.split(".")
+        scene.setdefault(table, {})[key] = value
+    if x_name == "alpha":
+        scene.setdefault("collision", {})["restitution"] = float(x)
+    elif x_name == "phi":
+        scene.setdefault("collision", {})["packing_fraction"] = float(x)
+    else:
+        sys.exit(f"figure.py: unknown swept parameter {x_name!r}; allowed: alpha, phi")
+    return scene
+
+
+def point_name(curve_index, x_name, x):
+    return f"curve{curve_index}_{x_name}{x:.4f}"
+
+
+# ---- running ----------------------------------------------------------------------------------------------
+
+def run_point(granmc, scene, path_stem, threads):
+    """Runs granmc on the scene unless the summary of this exact scene text exists; returns the summary."""
+    text = toml_text(scene)
+    scene_path, summary_path = path_stem + ".toml", path_stem + ".json"
+    if os.path.exists(summary_path) and os.path.exists(scene_path):
+        with open(scene_path) as f:
+            if f.read() == text:
+                with open(summary_path) as g:
+                    return json.load(g)
+    with open(scene_path, "w") as f:
+        f.write(text)
+    cmd = [granmc, "run", scene_path, "--out", path_stem + ".h5", "--summary", summary_path, "--quiet"]
+    if threads:
+        cmd += ["--threads", str(threads)]
+    print("  run", os.path.basename(scene_path), flush=True)
+    subprocess.run(cmd, check=True)
+    with open(summary_path) as g:
+        return json.load(g)
+
+
+def theory_of(granmc, scene, tmp_path):
+    with open(tmp_path, "w") as f:
+        f.write(toml_text(scene))
+    out = subprocess.run([granmc, "theory", tmp_path], check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+# ---- quantities -------------------------------------------------------------------------------------------
+
+def simulated(summary, y):
+    """[(label suffix, mean, ci)] for one point."""
+    if y in ("temperature_ratio", "temperature_ratio_relative"):
+        r = summary["temperature_ratio"]
+        return [("", r["mean"], r["ci"])]
+    if y == "cumulants":
+        return [(f" ({sp['name']})", 2.0 * sp["a2_last_half"]["mean"], 2.0 * sp["a2_last_half"]["ci"])
+                for sp in summary["species"]]
+    sys.exit(f"figure.py: unknown y {y!r}")
+
+
+def theoretical(th, y):
+    """{approximation: [values per series]} for one point."""
+    out = {}
+    if y in ("temperature_ratio", "temperature_ratio_relative"):
+        m = th.get("mixture")
+        if m:
+            out["Maxwellian"] = [m["temperature_ratio_maxwell"]]
+            out["first Sonine"] = [m["temperature_ratio_sonine"]]
+    elif y == "cumulants":
+        m = th.get("mixture")
+        if m:
+            out["first Sonine"] = [2.0 * a for a in m["a2_sonine"]]
+        one = th.get("scaled_state")
+        if one:
+            out["first Sonine"] = [2.0 * one["a2"]]
+            out["second Sonine"] = [2.0 * one["a2_second_sonine"]]
+    return out
+
+
+# ---- main -------------------------------------------------------------------------------------------------
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("figure")
+    p.add_argument("--granmc", default="build/bin/granmc")
+    p.add_argument("--out", default=None, help="output folder (default results/<figure folder name>)")
+    p.add_argument("--threads", type=int, default=0)
+    p.add_argument("--only-theory", action="store_true", help="plot theory lines only, run nothing")
+    args = p.parse_args()
+
+    with open(args.figure, "rb") as f:
+        spec = tomllib.load(f)
+    fig = spec["figure"]
+    here = os.path.dirname(os.path.abspath(args.figure))
+    bases = {}  # the figure's base scene under "", and any a curve names with its own `base`
+    for name in [""] + [c["base"] for c in spec["curve"] if "base" in c]:
+        with open(os.path.join(here, name or fig["base"]), "rb") as f:
+            bases[name] = tomllib.load(f)
+    out = args.out or os.path.join("results", os.path.basename(here))
+    os.makedirs(os.path.join(out, "points"), exist_ok=True)
+    x_name, y = fig["x"], fig["y"]
+    x_values = [float(v) for v in fig["x_values"]]
+    x_theory = np.linspace(*fig["x_theory"][:2], int(fig["x_theory"][2]))
+    curves = spec["curve"]
+
+    results = []
+    for ci_, curve in enumerate(curves):
+        print(f"{fig['paper']}: {curve['label']}", flush=True)
+        pts = []
+        if not args.only_theory:
+            for x in x_values:
+                summary = run_point(args.granmc, point_scene(bases, curve, x_name, x),
+                                    os.path.join(out, "points", point_name(ci_, x_name, x)), args.threads)
+                pts.append({"x": x, "sim": simulated(summary, y), "wall_seconds": summary["wall_seconds"],
+                            "theory": theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),
+                                                            os.path.join(out, "theory.toml")), y)})
+        lines = [theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),
+                                       os.path.join(out, "theory.toml")), y) for x in x_theory]
+        results.append({"label": curve["label"], "points": pts, "theory_x": list(x_theory), "theory": lines})
+
+    if y == "temperature_ratio_relative":
+        normalise(results)
+    with open(os.path.join(out, "figure.json"), "w") as f:
+        json.dump({"figure": fig, "curves": results}, f, indent=1)
+    write_table(fig, results, os.path.join(out, "table.md"))
+    plot(fig, results, os.path.join(out, "figure.png"))
+    print(f"wrote {out}/figure.png, {out}/table.md, {out}/figure.json")
+
+
+def normalise(results):
+    """gamma(x)/gamma(x = first value) per curve; CIs of the two independent runs combined."""
+    for c in results:
+        if c["points"]:
+            _, g0, e0 = c["points"][0]["sim"][0]
+            for pt in c["points"]:
+                _, g, e = pt["sim"][0]
+                r = g / g0
+                pt["sim"] = [("", r, r * np.hypot(e / g, e0 / g0))]
+                pt["theory"] = {k: [v[0] / c["points"][0]["theory"][k][0]] for k, v in pt["theory"].items()}
+        if c["theory"]:
+            ref = c["theory"][0]
+            c["theory"] = [{k: [v[0] / ref[k][0]] for k, v in line.items()} for line in c["theory"]]
+
+
+def write_table(fig, results, path):
+    with open(path, "w") as f:
+        f.write(f"# {fig['paper']}: {fig['caption']}\n\n")
+        f.write("| curve | x | quantity | granmc | CI | " + " | ".join(approximations(results)) + " | run (s) |\n")
+        f.write("|---|---|---|---|---|" + "---|" * len(approximations(results)) + "---|\n")
+        for c in results:
+            for pt in c["points"]:
+                for s, (suffix, m, e) in enumerate(pt["sim"]):
+                    th = [fmt(pt["theory"].get(a, [None] * (s + 1))[s] if s < len(pt["theory"].get(a, [])) else None)
+                          for a in approximations(results)]
+                    f.write(f"| {c['label']} | {pt['x']:g} | {fig['y']}{suffix} | {m:.4f} | {e:.4f} | "
+                            + " | ".join(th) + f" | {pt['wall_seconds']:.0f} |\n")
+
+
+def approximations(results):
+    names = []
+    for c in results:
+        for line in c["theory"]:
+            for k in line:
+                if k not in names:
+                    names.append(k)
+    return names
+
+
+def fmt(v):
+    return "-" if v is None else f"{v:.4f}"
+
+
+def plot(fig, results, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    styles = {"Maxwellian": ":", "first Sonine": "-", "second Sonine": "--"}
+    markers = ["o", "s", "^", "D", "v"]
+    f, ax = plt.subplots(figsize=(6.4, 4.8))
+    series = 0
+    for ci_, c in enumerate(results):
+        n_series = max([len(pt["sim"]) for pt in c["points"]] + [len(line.get(k, [])) for line in c["theory"]
+                                                                   for k in line] + [1])
+        for s in range(n_series):
+            colour = f"C{series % 10}"
+            series += 1
+            if c["points"] and s < len(c["points"][0]["sim"]):
+                xs = [pt["x"] for pt in c["points"]]
+                ms = [pt["sim"][s][1] for pt in c["points"]]
+                es = [pt["sim"][s][2] for pt in c["points"]]
+                ax.errorbar(xs, ms, yerr=es, fmt=markers[ci_ % len(markers)], color=colour, capsize=3,
+                            label=f"granmc, {c['label']}{c['points'][0]['sim'][s][0]}")
+            for approx in approximations(results):
+                ys = [line[approx][s] if approx in line and s < len(line[approx]) else np.nan for line in c["theory"]]
+                if np.all(np.isnan(ys)):
+                    continue
+                ax.plot(c["theory_x"], ys, styles.get(approx, "-."), color=colour, linewidth=1.0,
+                        label=f"{approx}, {c['label']}" if s == 0 or n_series == 1 else None)
+    ax.set_xlabel(fig.get("x_label", fig["x"]))
+    ax.set_ylabel(fig.get("y_label", fig["y"]))
+    ax.set_title(f"{fig['paper']}: {fig['caption']}", fontsize="small")
+    ax.legend(fontsize="x-small")
+    f.tight_layout()
+    f.savefig(path, dpi=120)
+
+
+if __name__ == "__main__":
+    main()
