@@ -25,6 +25,7 @@ struct ReplicaSeries {
                                                // in the order i * species + j, whole run
   std::uint64_t candidates = 0;            // candidate pairs tested
   std::uint64_t majorant_updates = 0;      // times omega_max was raised (000 sec. 3)
+  std::vector<double> majorant_growth;     // per ordered pair: final / initial omega_max (stored units)
   std::uint64_t rescales = 0;              // velocity rescalings (long cooling runs)
   double momentum_removed_relative = 0.0;  // sum over rescalings of the removed |P| / sqrt(M 2 E)
 };

@@ -13,6 +13,7 @@ template <class Kernel, class... Effects>
 ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
                                const RunOptions& options, Effects... effects) {
   Dsmc<Kernel, Effects...> sim(scene, replica, effects...);
+  const std::vector<double> initial_majorant = sim.omega_max();
   ReplicaSeries series;
   series.species.resize(scene.species.size());
   for (double t : times) {
@@ -22,6 +23,8 @@ ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const 
     if (options.on_sample) options.on_sample();
   }
   for (const CollisionTally& pair : sim.pair_tallies()) series.pair_collisions.push_back(pair.collisions);
+  for (std::size_t q = 0; q < initial_majorant.size(); ++q)
+    series.majorant_growth.push_back(sim.omega_max()[q] / initial_majorant[q]);
   series.candidates = sim.tally().candidates;
   series.majorant_updates = sim.tally().majorant_updates;
   series.rescales = sim.rescales();
