@@ -6,7 +6,7 @@ PYTHON ?= /usr/bin/python3
 JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
-.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-3 fig-000-4 fig-000-5 figures-000
+.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000
 
 all: build
 
@@ -38,7 +38,13 @@ hcs-alpha08: build
 fig-000-1 fig-000-3 fig-000-4 fig-000-5: fig-000-%: build
 	$(PYTHON) drivers/figure.py drivers/scenes/000_fig$*/figure.toml --granmc $(GRANMC)
 
-figures-000: fig-000-1 fig-000-3 fig-000-4 fig-000-5
+fig-000-2: build
+	$(GRANMC) run drivers/scenes/000_fig2/fig2.toml --out results/000_fig2/fig2.h5 --summary results/000_fig2/fig2.json
+	$(GRANMC) theory drivers/scenes/000_fig2/fig2.toml > results/000_fig2/theory.json
+	$(PYTHON) drivers/plot_delta.py results/000_fig2/fig2.h5 results/000_fig2/figure.png \
+	  --theory-json results/000_fig2/theory.json --table results/000_fig2/table.md
+
+figures-000: fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure

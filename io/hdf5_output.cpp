@@ -266,6 +266,18 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
                      result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a2; }),
                  replicas, "kurtosis cumulant a2 = (3/5) <V^4>/<V^2>^2 - 1 of species '" + sp.name + "'",
                  "dimensionless");
+    if (!sp.speed_distribution.mean.empty()) {
+      const std::string d = path + "/speed_distribution";
+      w.group(d, "distribution Phi_i(v*) of the scaled speed v* = |V|/v0 (000 eqs. 7, 19) over the last half of "
+                 "the samples, per shell of /speed_shell_edges; normalised per d^3 v*");
+      w.doubles(d + "/mean", sp.speed_distribution.mean, "replica mean of Phi_i(v*) in each shell (per d^3 v*)");
+      w.doubles(d + "/ci", sp.speed_distribution.ci,
+                "confidence half-width of the replica mean, lambda_p = 3.2 (001 eq. 31) (per d^3 v*)");
+      w.doubles(d + "/counts",
+                replica_rows(result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].speed_counts; }),
+                {replicas, sp.speed_distribution.mean.size()},
+                "particles counted in each shell (columns), summed over the histogram samples, per replica (rows)");
+    }
   }
 
   std::vector<double> momentum;
@@ -299,6 +311,14 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
   }
   w.group("/counters", "per-replica counters of the run");
   w.uint64s("/counters/candidates", candidates, "candidate pairs tested by each replica (count)");
+  std::vector<std::uint64_t> histogram_samples;
+  for (const ReplicaSeries& s : result.replicas) histogram_samples.push_back(s.histogram_samples);
+  w.uint64s("/counters/histogram_samples", histogram_samples,
+            "samples added to the speed histograms by each replica (the last half of the run) (count)");
+  if (!report.speed_shell_edges.empty())
+    w.doubles("/speed_shell_edges", report.speed_shell_edges,
+              "edges of the scaled-speed shells v* = |V|/v0, v0 = sqrt(2 T / m_hat) with m_hat = m1 m2/(m1 + m2) "
+              "for two species (000 eq. 7), m for one (dimensionless)");
   std::vector<std::uint64_t> pair_collisions;
   for (const ReplicaSeries& s : result.replicas)
     pair_collisions.insert(pair_collisions.end(), s.pair_collisions.begin(), s.pair_collisions.end());

@@ -1,6 +1,7 @@
 #include "io/run_report.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "kernel/observe/compensated_sum.hpp"
@@ -34,13 +35,13 @@ void check_shapes(const RunResult& result) {
   }
 }
 
-/// Replica mean and CI at each sample time of the series that `pick` selects from a replica.
+/// Replica mean and CI at each index k < n of the series pick(r) of replica r.
 template <class Pick>
-MeanCISeries per_time(const RunResult& result, Pick pick) {
+MeanCISeries per_index(std::size_t replicas, std::size_t n, Pick pick) {
   MeanCISeries out;
-  std::vector<double> values(result.replicas.size());
-  for (std::size_t k = 0; k < result.times.size(); ++k) {
-    for (std::size_t r = 0; r < result.replicas.size(); ++r) values[r] = pick(result.replicas[r])[k];
+  std::vector<double> values(replicas);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t r = 0; r < replicas; ++r) values[r] = pick(r)[k];
     const MeanCI m = replica_mean(values);
     out.mean.push_back(m.mean);
     out.ci.push_back(m.ci);
@@ -48,12 +49,36 @@ MeanCISeries per_time(const RunResult& result, Pick pick) {
   return out;
 }
 
+/// Replica mean and CI at each sample time.
+template <class Pick>
+MeanCISeries per_time(const RunResult& result, Pick pick) {
+  return per_index(result.replicas.size(), result.times.size(),
+                   [&](std::size_t r) -> const auto& { return pick(result.replicas[r]); });
+}
+
+/// Phi_i(v*) = counts / (N_i samples shell volume) for every replica: the scaled speed distribution,
+/// normalised so that its integral over d^3 v* is the fraction of particles inside the radius.
+std::vector<std::vector<double>> speed_distributions(const RunResult& result, std::size_t i,
+                                                     const std::vector<double>& edges, double particles) {
+  std::vector<std::vector<double>> phi;
+  for (const ReplicaSeries& s : result.replicas) {
+    const std::vector<double>& counts = s.species[i].speed_counts;
+    std::vector<double> p(counts.size());
+    for (std::size_t k = 0; k < counts.size(); ++k) {
+      const double volume = 4.0 * std::numbers::pi / 3.0 * (std::pow(edges[k + 1], 3) - std::pow(edges[k], 3));
+      p[k] = counts[k] / (particles * static_cast<double>(s.histogram_samples) * volume);
+    }
+    phi.push_back(std::move(p));
+  }
+  return phi;
+}
+
 /// value(series, k) averaged over the samples k >= (S-1)/2 in each replica (the last half of the run,
 /// where a heated or scaled cooling state is stationary), then over replicas.
 template <class Value>
 MeanCI last_half_average(const RunResult& result, Value value) {
   const std::size_t samples = result.times.size();
-  const std::size_t first = (samples - 1) / 2;  // k >= samples/2 with samples = S - 1 intervals
+  const std::size_t first = first_stationary_sample(samples);
   std::vector<double> per_replica;
   for (const ReplicaSeries& s : result.replicas) {
     CompensatedSum sum;
@@ -85,6 +110,15 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
         result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a2; });
     sp.a2_last_half =
         last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a2[k]; });
+    const std::size_t shells = result.replicas.front().species[i].speed_counts.size();
+    if (shells > 0 && i < scene.species.size()) {
+      if (report.speed_shell_edges.empty())
+        for (std::size_t k = 0; k <= shells; ++k)
+          report.speed_shell_edges.push_back(scene.histogram.radius * static_cast<double>(k) / shells);
+      const auto phi =
+          speed_distributions(result, i, report.speed_shell_edges, static_cast<double>(scene.species[i].particles));
+      sp.speed_distribution = per_index(phi.size(), shells, [&](std::size_t r) -> const auto& { return phi[r]; });
+    }
     report.species.push_back(std::move(sp));
   }
   for (const ReplicaSeries& s : result.replicas) {

@@ -29,6 +29,7 @@ struct SpeciesReport {
   MeanCISeries temperature;  // T_i(t) = m_i <V^2> / 3, energy units
   MeanCISeries a2;           // (3/5) <V^4>/<V^2>^2 - 1, dimensionless
   MeanCI a2_last_half;       // a2 over the last half of the samples (as temperature_ratio)
+  MeanCISeries speed_distribution;  // Phi_i(v*) per speed shell over the last half (000 eq. 19), per d^3 v*
 };
 
 struct RunReport {
@@ -38,6 +39,7 @@ struct RunReport {
   MeanCISeries log_temperature;        // <ln T>(t) over replicas (finite where T underflows)
   MeanCISeries momentum_relative;      // |P| / sqrt(M 2 E_kin), dimensionless
   std::vector<SpeciesReport> species;  // in scene order
+  std::vector<double> speed_shell_edges;  // v* shell edges of the speed distributions (shells + 1 values)
 
   std::uint64_t collisions = 0;        // accepted collisions, summed over replicas (last sample)
   std::uint64_t candidates = 0;        // candidate pairs tested, all replicas

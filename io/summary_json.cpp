@@ -52,8 +52,10 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
     species.push_back({{"name", sp.name},
                        {"temperature", mean_ci(sp.temperature)},
                        {"a2", mean_ci(sp.a2)},
-                       {"a2_last_half", mean_ci(sp.a2_last_half)}});
+                       {"a2_last_half", mean_ci(sp.a2_last_half)},
+                       {"speed_distribution", mean_ci(sp.speed_distribution)}});
   j["species"] = std::move(species);
+  j["speed_shell_edges"] = numbers(report.speed_shell_edges);
   if (report.temperature_ratio) j["temperature_ratio"] = mean_ci(*report.temperature_ratio);
   if (report.theory) {
     j["theory"] = cooling_state_json(*report.theory);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "kernel/observe/speed_histogram.hpp"
+
 
 namespace granmc {
 
@@ -22,7 +24,7 @@ GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& mome
   return t;
 }
 
-void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series) {
+void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram) {
   const double n = total_density(scene);
   const std::vector<SpeciesMoments> moments = gas_moments(state);
   double theta_mix = 0.0;  // sum_i x_i m_i <c^2> / 3, the mixture temperature in stored units
@@ -35,6 +37,15 @@ void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& serie
     s.log_temperature.push_back(log_t);
     s.a2.push_back(moments[i].a2());
     theta_mix += sp.density / n * theta;
+  }
+  if (histogram) {
+    const double unit = scaled_speed_unit(scene, theta_mix);
+    for (std::size_t i = 0; i < moments.size(); ++i) {
+      std::vector<double>& counts = series.species[i].speed_counts;
+      counts.resize(static_cast<std::size_t>(scene.histogram.shells), 0.0);
+      add_speeds(state.species[i], unit, scene.histogram.radius, counts);
+    }
+    ++series.histogram_samples;
   }
   const GasTotals totals = gas_totals(scene, moments);
   const double log_t = state.scale.log_temperature(theta_mix);

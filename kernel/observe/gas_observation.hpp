@@ -9,8 +9,9 @@
 
 namespace granmc {
 
-/// Appends one observation of `state` to `series` (series.species must have one entry per species).
-void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series);
+/// Appends one observation of `state` to `series` (series.species must have one entry per species); with
+/// `histogram`, also adds the scaled speeds to each species' speed_counts.
+void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram);
 
 /// The moments of every species of `state`, in species order.
 std::vector<SpeciesMoments> gas_moments(const GasState& state);

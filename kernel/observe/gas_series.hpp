@@ -1,5 +1,6 @@
 #pragma once
 // What a gas replica records at each sample time, and the run's results over all replicas.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -8,10 +9,16 @@
 
 namespace granmc {
 
+/// The samples k >= (S - 1) / 2 of S sample times: the last half of a run, where heated and scaled
+/// cooling states are stationary. Time averages and speed histograms are taken over them.
+constexpr std::size_t first_stationary_sample(std::size_t sample_times) noexcept { return (sample_times - 1) / 2; }
+
 struct SpeciesSeries {
   std::vector<double> temperature;      // T_i = m_i <V^2> / 3 (energy units)
   std::vector<double> log_temperature;  // ln T_i, finite where T_i underflows
   std::vector<double> a2;               // (3/5) <V^4> / <V^2>^2 - 1
+  std::vector<double> speed_counts;     // histogram of v* = |V| / v0 over the stationary samples
+                                        // (observe/speed_histogram.hpp), output.histogram shells
 };
 
 struct ReplicaSeries {
@@ -23,6 +30,7 @@ struct ReplicaSeries {
   std::vector<double> collisions;          // accepted collisions since t = 0, at each sample
   std::vector<std::uint64_t> pair_collisions;  // accepted collisions per ordered species pair (i, j),
                                                // in the order i * species + j, whole run
+  std::uint64_t histogram_samples = 0;     // samples added to the speed histograms
   std::uint64_t candidates = 0;            // candidate pairs tested
   std::uint64_t majorant_updates = 0;      // times omega_max was raised (000 sec. 3)
   std::vector<double> majorant_growth;     // per ordered pair: final / initial omega_max (stored units)

@@ -16,9 +16,9 @@ ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const 
   const std::vector<double> initial_majorant = sim.omega_max();
   ReplicaSeries series;
   series.species.resize(scene.species.size());
-  for (double t : times) {
-    sim.advance_to(t);
-    observe_gas(scene, sim.state(), series);
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    sim.advance_to(times[k]);
+    observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
     if (options.on_sample) options.on_sample();
   }

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""Delta_i(v*) of paper 000 eq. 19 from a granmc run, against the first Sonine polynomial (eq. 20).
+
+Usage: /usr/bin/python3 drivers/plot_delta.py RESULT.h5 OUT.png [--species 0] [--theory-json THEORY.json]
+
+Phi_i(v*) = (lambda_i/pi)^(3/2) exp(-lambda_i v*^2) [1 + (c_i/2) Delta_i(v*)], lambda_i = T / (T_i mu_ji),
+c_i = 2 a2_i. Per replica: Phi_i from the speed histogram (shell averages), c_i and T/T_i from the time
+averages over the same samples (the last half), and the Maxwellian averaged over each shell exactly (erf),
+so binning does not bias Delta; then the replica mean and CI (lambda_p = 3.2, 001 eq. 31). The theory line
+is eq. 20 with lambda_i of the first-Sonine temperature ratio (from `granmc theory`, optional).
+"""
+import argparse
+import json
+import math
+import sys
+
+import numpy as np
+
+LAMBDA_P = 3.2
+
+
+def shell_maxwell(lam, edges):
+    """Average over each shell of (lam/pi)^(3/2) exp(-lam v^2), per d^3 v."""
+    def cumulative(v):  # integral of 4 pi v^2 (lam/pi)^1.5 exp(-lam v^2) from 0 to v
+        x = math.sqrt(lam) * v
+        return math.erf(x) - 2.0 / math.sqrt(math.pi) * x * math.exp(-x * x)
+    volumes = 4.0 * math.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3)
+    return np.array([cumulative(b) - cumulative(a) for a, b in zip(edges[:-1], edges[1:])]) / volumes
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("result")
+    p.add_argument("out")
+    p.add_argument("--species", type=int, default=0)
+    p.add_argument("--theory-json", help="output of `granmc theory` for the scene")
+    p.add_argument("--table", help="write a Markdown table of Delta here")
+    args = p.parse_args()
+    import h5py
+    with h5py.File(args.result, "r") as f:
+        edges = f["speed_shell_edges"][()]
+        groups = sorted(f["species"].values(), key=lambda g: int(g.attrs["index"]))
+        if len(groups) != 2:
+            sys.exit("plot_delta.py: needs a two-species run (000 eq. 19 uses mu_ji)")
+        i, j = args.species, 1 - args.species
+        gi = groups[i]
+        m = [float(g.attrs["mass"]) for g in groups]
+        n_particles = [int(g.attrs["particles"]) for g in groups]
+        x = [n / sum(n_particles) for n in n_particles]  # mole fractions (N_i/N = n_i/n)
+        counts = gi["speed_distribution/counts"][()]          # R x K
+        samples = f["counters/histogram_samples"][()]          # R
+        times = f["times"][()]
+        first = (len(times) - 1) // 2
+        t_i = gi["temperature/replicas"][()][:, first:].mean(axis=1)
+        t_j = groups[j]["temperature/replicas"][()][:, first:].mean(axis=1)
+        a2 = gi["a2/replicas"][()][:, first:].mean(axis=1)
+        scene = f.attrs["scene_path"]
+    mu_ji = m[j] / (m[i] + m[j])
+    volumes = 4.0 * np.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    deltas, lams, cs = [], [], []
+    for r in range(counts.shape[0]):
+        t_mix = x[i] * t_i[r] + x[j] * t_j[r]
+        lam = t_mix / (t_i[r] * mu_ji)                      # 000 after eq. (19)
+        phi = counts[r] / (n_particles[i] * samples[r] * volumes)
+        c = 2.0 * a2[r]
+        deltas.append((phi / shell_maxwell(lam, edges) - 1.0) * 2.0 / c)
+        lams.append(lam)
+        cs.append(c)
+    deltas = np.array(deltas)
+    mean = deltas.mean(axis=0)
+    ci = LAMBDA_P * np.sqrt(deltas.var(axis=0) / deltas.shape[0])
+    lam = float(np.mean(lams))
+    c = float(np.mean(cs))
+    c_ci = LAMBDA_P * float(np.std(cs)) / math.sqrt(len(cs))
+
+    lam_theory = None
+    if args.theory_json:
+        with open(args.theory_json) as fh:
+            th = json.load(fh)["mixture"]
+        gamma = th["temperature_ratio_sonine"] if i == 0 else 1.0 / th["temperature_ratio_sonine"]
+        lam_theory = (x[i] + x[j] / gamma) / mu_ji           # T/T_i = x_i + x_j T_j/T_i
+    v = np.linspace(0.0, edges[-1], 200)
+    sonine = lambda l: 0.5 * l * l * v ** 4 - 2.5 * l * v ** 2 + 15.0 / 8.0   # 000 eq. (20)
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    shown = counts.sum(axis=0) > 100  # shells with enough particles to say anything
+    ax.errorbar(centres[shown], mean[shown], yerr=ci[shown], fmt="o", ms=3, capsize=2,
+                label=f"granmc, species {i + 1} (c = {c:.4f} +- {c_ci:.4f})")
+    ax.plot(v, sonine(lam), "k--", linewidth=1.0, label=f"eq. 20 with measured lambda = {lam:.3f}")
+    if lam_theory is not None:
+        ax.plot(v, sonine(lam_theory), "k:", linewidth=1.0, label=f"eq. 20 with Sonine lambda = {lam_theory:.3f}")
+    ax.set_ylim(-4, 8)
+    ax.set_xlabel("scaled speed v* = |V| / v0")
+    ax.set_ylabel(f"Delta_{i + 1}(v*)")
+    ax.set_title(f"000 Fig. 2: {scene}", fontsize="small")
+    ax.axhline(0.0, color="0.6", linewidth=0.5)
+    ax.legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=120)
+    if args.table:
+        with open(args.table, "w") as fh:
+            fh.write(f"# 000 Fig. 2: Delta_{i + 1}(v*), lambda = {lam:.4f}, c = {c:.4f} +- {c_ci:.4f}\n\n")
+            fh.write("| v* | granmc Delta | CI | eq. 20 (measured lambda) |\n|---|---|---|---|\n")
+            for k in np.nonzero(shown)[0]:
+                s = 0.5 * lam * lam * centres[k] ** 4 - 2.5 * lam * centres[k] ** 2 + 15.0 / 8.0
+                fh.write(f"| {centres[k]:.3f} | {mean[k]:.3f} | {ci[k]:.3f} | {s:.3f} |\n")
+    print(f"wrote {args.out}; lambda = {lam:.4f}, c = {c:.4f} +- {c_ci:.4f}")
+
+
+if __name__ == "__main__":
+    main()
