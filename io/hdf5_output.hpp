@@ -8,15 +8,21 @@
 //   /times                    [S]
 //   /temperature/{mean,ci}    [S], /temperature/replicas [R x S]
 //   /log_temperature/{mean,ci} [S], /log_temperature/replicas [R x S]
-//   /species/<name>/          attributes name, index (scene order), particles, mass
+//   /species/<name>/          attributes name, index (scene order), particles, mass,
+//                             a2_last_half_mean, a2_last_half_ci
 //     temperature/{mean,ci,replicas}, a2/{mean,ci,replicas}
+//     speed_distribution/{mean,ci} [K], speed_distribution/counts [R x K] (K = output.histogram shells)
+//   /speed_shell_edges        [K + 1], scaled speed v* = |V|/v0
 //   /momentum/replicas        [R x S x 3]
 //   /momentum_relative/{mean,ci} [S], /momentum_relative/replicas [R x S]
 //   /collisions/replicas      [R x S], cumulative accepted collisions (stored as double, exact below 2^53)
-//   /counters/{candidates,majorant_updates,rescales} [R] uint64, /counters/momentum_removed_relative [R]
+//   /counters/{candidates,majorant_updates,rescales,histogram_samples} [R] uint64,
+//   /counters/pair_collisions [R x P] uint64 (P ordered species pairs), /counters/momentum_removed_relative [R]
 //   /temperature_ratio        scalar group with attributes mean, ci (two species only)
-//   /theory/                  attributes a2_sonine, cooling_rate0, cooling_rate0_maxwell, chi, alpha,
-//                             collision_frequency0; /theory/haff_temperature [S] (when the theory applies)
+//   /theory/                  attributes a2_sonine, a2_model_error, a2_second_sonine, a3_second_sonine,
+//                             cooling_rate0, cooling_rate0_first_sonine, cooling_rate0_maxwell,
+//                             cooling_rate_model_error, chi, alpha, collision_frequency0;
+//                             /theory/haff_temperature [S] (monodisperse cooling state only)
 #include <string>
 
 #include "io/run_report.hpp"

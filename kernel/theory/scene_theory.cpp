@@ -57,25 +57,22 @@ std::optional<MixturePrediction> mixture_state(const Scene& scene) {
 }
 
 std::optional<CoolingStatePrediction> cooling_state(const Scene& scene, const std::vector<double>& times) {
-  if (scene.species.size() != 1 || scene.run.method != Method::dsmc ||
-      scene.collision.kernel != CollisionKernel::hard_sphere || scene.thermostat.kind != ThermostatKind::none ||
-      scene.shear_rate != 0.0 || scene.relaxation)
-    return std::nullopt;
+  const std::optional<ScaledStatePrediction> scaled = scaled_state(scene);
+  if (!scaled || scene.thermostat.kind != ThermostatKind::none) return std::nullopt;
   const SpeciesConfig& s = scene.species[0];
   CoolingStatePrediction p;
   p.alpha = scene.collision.restitution[0][0];
   p.chi = scene.collision.packing_fraction > 0.0
               ? enskog_chi(scene.collision.packing_fraction, {1.0}, {s.diameter}, 0, 0)
               : 1.0;
-  p.a2 = hcs_a2(p.alpha);
-  p.a2_model_error = hcs_a2_model_error(p.alpha);
-  const SecondSonine second = hcs_second_sonine(p.alpha);
-  p.a2_second_sonine = second.a2;
-  p.a3_second_sonine = second.a3;
+  p.a2 = scaled->a2;
+  p.a2_model_error = scaled->a2_model_error;
+  p.a2_second_sonine = scaled->a2_second_sonine;
+  p.a3_second_sonine = scaled->a3_second_sonine;
   const double t0 = scene.initial_temperature;
   p.cooling_rate0_maxwell = cooling_rate(p.alpha, s.density, s.diameter, s.mass, t0, p.chi, 0.0);
   p.cooling_rate0_first_sonine = cooling_rate(p.alpha, s.density, s.diameter, s.mass, t0, p.chi, p.a2);
-  const double factor = hcs_cooling_rate_factor(second.a2, second.a3);
+  const double factor = hcs_cooling_rate_factor(p.a2_second_sonine, p.a3_second_sonine);
   p.cooling_rate0 = p.cooling_rate0_maxwell * factor;
   // The run starts Maxwellian (factor 1) and relaxes to the HCS factor within a few collisions; the
   // factor itself is uncertain by about (3/16) of the a2 model error.
