@@ -1,5 +1,6 @@
 #include "drivers/cli.hpp"
 
+#include <omp.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -19,7 +20,9 @@
 #include "io/summary_json.hpp"
 #include "io/theory_json.hpp"
 #include "granmc/version.hpp"
+#include "kernel/core/species_store.hpp"
 #include "kernel/schemes/dispatch.hpp"
+#include "kernel/schemes/run_plan.hpp"
 
 namespace granmc {
 
@@ -32,7 +35,30 @@ struct RunArgs {
   int threads = 0;
   std::optional<std::uint64_t> seed;
   bool quiet = false;
+  bool explain = false;
 };
+
+/// Candidates per second per thread on this machine's kind (docs/performance.md, N = 10^5 to 10^7),
+/// for the time estimate of --explain.
+constexpr double measured_candidates_per_second = 1.0e7;
+
+int explain_command(const Scene& scene, const RunArgs& args) {
+  const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
+  const RunPlan plan = plan_run(scene, threads);
+  std::printf("scene        %s\n", args.scene.c_str());
+  std::printf("kernel       %s\n", plan.instantiation.c_str());
+  for (const std::string& e : plan.effects) std::printf("effect       %s\n", e.c_str());
+  std::string absent;
+  for (const std::string& a : plan.absent) absent += (absent.empty() ? "" : ", ") + a;
+  if (!absent.empty()) std::printf("not compiled %s (the scene does not name them)\n", absent.c_str());
+  std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
+              static_cast<double>(plan.particle_bytes) / 1e6, plan.replicas_in_flight,
+              SpeciesStore::bytes_per_particle());
+  const double seconds = plan.candidates / (measured_candidates_per_second * plan.replicas_in_flight);
+  std::printf("work         %s%.3g candidate pairs, about %.0f s on %d threads at 1e7 candidates/s per thread\n",
+              plan.candidates_upper_bound ? "at most " : "", plan.candidates, seconds, threads);
+  return exit_ok;
+}
 
 /// Loads and checks a scene; on a bad scene prints one message and returns nothing.
 std::optional<Scene> checked_scene(const std::string& path, std::optional<std::uint64_t> seed) {
@@ -58,6 +84,7 @@ int run_command(const RunArgs& args) {
   const std::optional<Scene> loaded = checked_scene(args.scene, args.seed);
   if (!loaded) return exit_bad_input;
   const Scene& scene = *loaded;
+  if (args.explain) return explain_command(scene, args);
   const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
 
   const bool show_progress = !args.quiet && isatty(STDERR_FILENO);
@@ -112,6 +139,8 @@ int cli_main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   run_cmd->add_option("--seed", run.seed, "Override the scene's run.seed");
   run_cmd->add_flag("--quiet", run.quiet, "No progress line and no closing message");
+  run_cmd->add_flag("--explain", run.explain,
+                    "Print the kernel, the effects, the memory and a cost estimate, and run nothing");
 
   std::string theory_scene;
   CLI::App* theory_cmd = app.add_subcommand("theory", "Print the theory predictions that apply to a scene (JSON)");

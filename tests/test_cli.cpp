@@ -125,6 +125,16 @@ TEST_F(Cli, TheoryPrintsJsonForTheScene) {
   EXPECT_NE(o.stdout_text.find("\"a2_second_sonine\""), std::string::npos);
 }
 
+TEST_F(Cli, ExplainPrintsThePlanAndRunsNothing) {
+  write("heated.toml", good_scene + "[thermostat]\nkind = \"gaussian\"\n");
+  const Outcome o = granmc("run heated.toml --explain");
+  EXPECT_EQ(o.status, 0) << o.stderr_text;
+  EXPECT_NE(o.stdout_text.find("dsmc<hard-sphere, gaussian-thermostat>"), std::string::npos) << o.stdout_text;
+  EXPECT_NE(o.stdout_text.find("not compiled shear"), std::string::npos) << o.stdout_text;
+  EXPECT_NE(o.stdout_text.find("memory"), std::string::npos) << o.stdout_text;
+  EXPECT_TRUE(outputs().empty());
+}
+
 TEST_F(Cli, HelpExitsZero) {
   EXPECT_EQ(granmc("--help").status, 0);
   EXPECT_EQ(granmc("run --help").status, 0);

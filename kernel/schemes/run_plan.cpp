@@ -1,0 +1,74 @@
+#include "kernel/schemes/run_plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/core/species_store.hpp"
+#include "kernel/schemes/dispatch.hpp"
+#include "kernel/theory/scene_theory.hpp"
+
+namespace granmc {
+
+namespace {
+
+/// The speed x (in units of the one-component thermal width) that one of N Maxwellian particles exceeds
+/// on average: P(|c| > x) = erfc(x / sqrt 2) + sqrt(2 / pi) x exp(-x^2 / 2) = 1 / N. Sets the initial majorant.
+double expected_max_speed(double particles) {
+  double lo = 0.0, hi = 40.0;
+  for (int it = 0; it < 200; ++it) {
+    const double x = 0.5 * (lo + hi);
+    const double tail = std::erfc(x / std::sqrt(2.0)) + std::sqrt(2.0 / std::numbers::pi) * x * std::exp(-0.5 * x * x);
+    (tail > 1.0 / particles ? lo : hi) = x;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+RunPlan plan_run(const Scene& scene, int threads) {
+  RunPlan plan;
+  plan.instantiation = instantiation_name(scene);
+  plan.effects.push_back(scene.species.size() == 1
+                             ? "one species"
+                             : "two species: 4 ordered pairs, candidates interleaved within each step");
+  if (scene.collision.packing_fraction > 0.0)
+    plan.effects.push_back("Enskog chi_ij (Carnahan-Starling), folded into the pair rates");
+  if (scene.thermostat.kind == ThermostatKind::gaussian)
+    plan.effects.push_back(scene.thermostat.zeta_is_cooling_rate
+                               ? "Gaussian thermostat compensating the cooling rate (O(1) per step)"
+                               : "Gaussian thermostat, fixed zeta (O(1) per step)");
+  if (scene.run.dt_scaling == DtScaling::thermal) plan.effects.push_back("time step following the thermal speed");
+  if (scene.thermostat.kind == ThermostatKind::none) plan.absent.push_back("thermostat");
+  if (scene.shear_rate == 0.0) plan.absent.push_back("shear");
+  if (!scene.relaxation) plan.absent.push_back("relaxation term");
+  if (scene.collision.packing_fraction == 0.0) plan.absent.push_back("Enskog chi");
+
+  plan.replicas_in_flight = std::max(1, std::min(threads, scene.run.replicas));
+  std::uint64_t particles = 0;
+  for (const SpeciesConfig& s : scene.species) particles += static_cast<std::uint64_t>(s.particles);
+  plan.particle_bytes = particles * SpeciesStore::bytes_per_particle() * plan.replicas_in_flight;
+
+  // Candidates: sum over pairs of 1/2 N_i omega_max^(ij) int u dt, omega_max from the expected largest
+  // initial speeds (stored units, unit temperature), int u dt from Haff's law when it applies, else
+  // u(0) t_end (exact with the compensating thermostat, an upper bound for a cooling mixture).
+  double u_time = scene.run.t_end;  // int_0^t_end u(t)/u(0) dt
+  plan.candidates_upper_bound = scene.thermostat.kind != ThermostatKind::gaussian;
+  if (const auto hcs = theory::cooling_state(scene, {})) {
+    u_time = 2.0 / hcs->cooling_rate0 * std::log1p(0.5 * hcs->cooling_rate0 * scene.run.t_end);
+    plan.candidates_upper_bound = false;
+  }
+  const double u0 = std::sqrt(scene.initial_temperature);
+  for (const PairCoefficients& p : pair_coefficients(scene)) {
+    const SpeciesConfig& a = scene.species[p.i];
+    const SpeciesConfig& b = scene.species[p.j];
+    const double max_a = expected_max_speed(static_cast<double>(a.particles)) / std::sqrt(a.mass);
+    const double max_b = expected_max_speed(static_cast<double>(b.particles)) / std::sqrt(b.mass);
+    plan.candidates += 0.5 * static_cast<double>(a.particles) * p.rate_prefactor * (max_a + max_b) * u0 * u_time;
+  }
+  plan.candidates *= scene.run.replicas;
+  return plan;
+}
+
+}  // namespace granmc
