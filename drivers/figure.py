@@ -115,8 +115,9 @@ def simulated(summary, y):
         r = summary["temperature_ratio"]
         return [("", r["mean"], r["ci"])]
     if y == "cumulants":
-        return [(f" ({sp['name']})", 2.0 * sp["a2_last_half"]["mean"], 2.0 * sp["a2_last_half"]["ci"])
-                for sp in summary["species"]]
+        species = summary["species"]
+        return [(f", species {sp['name']}" if len(species) > 1 else "", 2.0 * sp["a2_last_half"]["mean"],
+                 2.0 * sp["a2_last_half"]["ci"]) for sp in species]
     sys.exit(f"figure.py: unknown y {y!r}")
 
 
@@ -247,18 +248,19 @@ def plot(fig, results, path):
         for s in range(n_series):
             colour = f"C{series % 10}"
             series += 1
+            suffix = c["points"][0]["sim"][s][0] if c["points"] and s < len(c["points"][0]["sim"]) else ""
             if c["points"] and s < len(c["points"][0]["sim"]):
                 xs = [pt["x"] for pt in c["points"]]
                 ms = [pt["sim"][s][1] for pt in c["points"]]
                 es = [pt["sim"][s][2] for pt in c["points"]]
                 ax.errorbar(xs, ms, yerr=es, fmt=markers[ci_ % len(markers)], color=colour, capsize=3,
-                            label=f"granmc, {c['label']}{c['points'][0]['sim'][s][0]}")
+                            label=f"granmc, {c['label']}{suffix}")
             for approx in approximations(results):
                 ys = [line[approx][s] if approx in line and s < len(line[approx]) else np.nan for line in c["theory"]]
                 if np.all(np.isnan(ys)):
                     continue
                 ax.plot(c["theory_x"], ys, styles.get(approx, "-."), color=colour, linewidth=1.0,
-                        label=f"{approx}, {c['label']}" if s == 0 or n_series == 1 else None)
+                        label=f"{approx}, {c['label']}{suffix}")
     ax.set_xlabel(fig.get("x_label", fig["x"]))
     ax.set_ylabel(fig.get("y_label", fig["y"]))
     ax.set_title(f"{fig['paper']}: {fig['caption']}", fontsize="small")

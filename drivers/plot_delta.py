@@ -4,6 +4,8 @@
 Usage: /usr/bin/python3 drivers/plot_delta.py RESULT.h5 OUT.png [--species 0] [--theory-json THEORY.json]
 
 Phi_i(v*) = (lambda_i/pi)^(3/2) exp(-lambda_i v*^2) [1 + (c_i/2) Delta_i(v*)], lambda_i = T / (T_i mu_ji),
+(the first Sonine term gives Delta_i = S2(lambda_i v*^2), eq. 20; the next one adds (a3_i/a2_i) S3, drawn with
+the measured a3_i),
 c_i = 2 a2_i. Per replica: Phi_i from the speed histogram (shell averages), c_i and T/T_i from the time
 averages over the same samples (the last half), and the Maxwellian averaged over each shell exactly (erf),
 so binning does not bias Delta; then the replica mean and CI (lambda_p = 3.2, 001 eq. 31). The theory line
@@ -54,6 +56,7 @@ def main():
         t_i = gi["temperature/replicas"][()][:, first:].mean(axis=1)
         t_j = groups[j]["temperature/replicas"][()][:, first:].mean(axis=1)
         a2 = gi["a2/replicas"][()][:, first:].mean(axis=1)
+        a3 = gi["a3/replicas"][()][:, first:].mean(axis=1) if "a3" in gi else None
         scene = f.attrs["scene_path"]
     mu_ji = m[j] / (m[i] + m[j])
     volumes = 4.0 * np.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3)
@@ -82,6 +85,7 @@ def main():
         lam_theory = (x[i] + x[j] / gamma) / mu_ji           # T/T_i = x_i + x_j T_j/T_i
     v = np.linspace(0.0, edges[-1], 200)
     sonine = lambda l: 0.5 * l * l * v ** 4 - 2.5 * l * v ** 2 + 15.0 / 8.0   # 000 eq. (20)
+    s3 = lambda z: -z ** 3 / 6.0 + 7.0 * z ** 2 / 4.0 - 35.0 * z / 8.0 + 35.0 / 16.0  # Sonine S3, z = lambda v*^2
 
     import matplotlib
     matplotlib.use("Agg")
@@ -91,6 +95,11 @@ def main():
     ax.errorbar(centres[shown], mean[shown], yerr=ci[shown], fmt="o", ms=3, capsize=2,
                 label=f"granmc, species {i + 1} (c = {c:.4f} +- {c_ci:.4f})")
     ax.plot(v, sonine(lam), "k--", linewidth=1.0, label=f"eq. 20 with measured lambda = {lam:.3f}")
+    if a3 is not None:
+        # With the third Sonine coefficient: Phi/Phi_M - 1 = a2 S2 + a3 S3, so Delta = S2 + (a3/a2) S3.
+        ratio = float(np.mean(a3)) / float(np.mean(a2))
+        ax.plot(v, sonine(lam) + ratio * s3(lam * v ** 2), "C3-", linewidth=1.0,
+                label=f"S2 + (a3/a2) S3 with measured a3/a2 = {ratio:.3f}")
     if lam_theory is not None:
         ax.plot(v, sonine(lam_theory), "k:", linewidth=1.0, label=f"eq. 20 with Sonine lambda = {lam_theory:.3f}")
     ax.set_ylim(-4, 8)

@@ -266,6 +266,12 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
                      result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a2; }),
                  replicas, "kurtosis cumulant a2 = (3/5) <V^4>/<V^2>^2 - 1 of species '" + sp.name + "'",
                  "dimensionless");
+    write_series(w, path + "/a3", sp.a3,
+                 replica_rows(result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a3; }),
+                 replicas, "third Sonine coefficient a3 = 1 + 3 a2 - (9/35) <V^6>/<V^2>^3 of species '" + sp.name + "'",
+                 "dimensionless");
+    w.attribute(path, "a3_last_half_mean", sp.a3_last_half.mean);
+    w.attribute(path, "a3_last_half_ci", sp.a3_last_half.ci);
     if (!sp.speed_distribution.mean.empty()) {
       const std::string d = path + "/speed_distribution";
       w.group(d, "distribution Phi_i(v*) of the scaled speed v* = |V|/v0 (000 eqs. 7, 19) over the last half of "

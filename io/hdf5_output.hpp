@@ -10,7 +10,8 @@
 //   /log_temperature/{mean,ci} [S], /log_temperature/replicas [R x S]
 //   /species/<name>/          attributes name, index (scene order), particles, mass,
 //                             a2_last_half_mean, a2_last_half_ci
-//     temperature/{mean,ci,replicas}, a2/{mean,ci,replicas}
+//     temperature/{mean,ci,replicas}, a2/{mean,ci,replicas}, a3/{mean,ci,replicas}
+//                             (attributes a3_last_half_mean, a3_last_half_ci)
 //     speed_distribution/{mean,ci} [K], speed_distribution/counts [R x K] (K = output.histogram shells)
 //   /speed_shell_edges        [K + 1], scaled speed v* = |V|/v0
 //   /momentum/replicas        [R x S x 3]

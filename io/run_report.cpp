@@ -31,6 +31,7 @@ void check_shapes(const RunResult& result) {
       require_length(sp.temperature.size(), samples, "species temperature", r);
       require_length(sp.log_temperature.size(), samples, "species log_temperature", r);
       require_length(sp.a2.size(), samples, "species a2", r);
+      require_length(sp.a3.size(), samples, "species a3", r);
     }
   }
 }
@@ -110,6 +111,9 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
         result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a2; });
     sp.a2_last_half =
         last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a2[k]; });
+    sp.a3 = per_time(result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a3; });
+    sp.a3_last_half =
+        last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a3[k]; });
     const std::size_t shells = result.replicas.front().species[i].speed_counts.size();
     if (shells > 0 && i < scene.species.size()) {
       if (report.speed_shell_edges.empty())

@@ -29,6 +29,8 @@ struct SpeciesReport {
   MeanCISeries temperature;  // T_i(t) = m_i <V^2> / 3, energy units
   MeanCISeries a2;           // (3/5) <V^4>/<V^2>^2 - 1, dimensionless
   MeanCI a2_last_half;       // a2 over the last half of the samples (as temperature_ratio)
+  MeanCISeries a3;           // 1 + 3 a2 - (9/35) <V^6>/<V^2>^3, dimensionless
+  MeanCI a3_last_half;
   MeanCISeries speed_distribution;  // Phi_i(v*) per speed shell over the last half (000 eq. 19), per d^3 v*
 };
 

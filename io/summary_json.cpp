@@ -53,6 +53,8 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
                        {"temperature", mean_ci(sp.temperature)},
                        {"a2", mean_ci(sp.a2)},
                        {"a2_last_half", mean_ci(sp.a2_last_half)},
+                       {"a3", mean_ci(sp.a3)},
+                       {"a3_last_half", mean_ci(sp.a3_last_half)},
                        {"speed_distribution", mean_ci(sp.speed_distribution)}});
   j["species"] = std::move(species);
   j["speed_shell_edges"] = numbers(report.speed_shell_edges);

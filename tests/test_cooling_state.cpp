@@ -69,6 +69,26 @@ TEST_F(CoolingState, HaffLawWithinConfidenceAndSonineError) {
   EXPECT_LT(final_ratio, 0.02);
 }
 
+TEST_F(CoolingState, A3IsZeroForTheMaxwellianStartAndNegativeInTheCoolingState) {
+  std::vector<double> start, late;
+  for (const ReplicaSeries& rep : result_->replicas) {
+    start.push_back(rep.species[0].a3.front());
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = 0; k < result_->times.size(); ++k)
+      if (result_->times[k] >= 5.0) {
+        sum += rep.species[0].a3[k];
+        ++count;
+      }
+    late.push_back(sum / count);
+  }
+  const MeanCI s = replica_mean(start), l = replica_mean(late);
+  std::printf("[ measured ] a3 at t = 0: %.5f +- %.5f; stationary %.5f +- %.5f (second Sonine %.5f)\n", s.mean, s.ci,
+              l.mean, l.ci, theory_->a3_second_sonine);
+  EXPECT_NEAR(s.mean, 0.0, s.ci);  // a Maxwellian start has a3 = 0
+  EXPECT_LT(l.mean + l.ci, 0.0);   // a3 < 0 at alpha = 0.8, as the second-Sonine theory says
+}
+
 TEST_F(CoolingState, A2MatchesSonineWithinConfidenceAndModelError) {
   // Time average per replica once the scaled state is stationary (t >= 5: about 20 collisions per
   // particle, while a2 relaxes within a few), then the replica mean and its CI.

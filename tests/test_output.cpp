@@ -47,6 +47,7 @@ SpeciesSeries species_series(std::vector<double> temperature, std::vector<double
   SpeciesSeries s;
   for (double t : temperature) s.log_temperature.push_back(std::log(t));
   s.temperature = std::move(temperature);
+  s.a3.assign(a2.size(), 0.0);  // Maxwellian-like
   s.a2 = std::move(a2);
   return s;
 }

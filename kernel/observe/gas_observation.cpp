@@ -36,6 +36,7 @@ void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& serie
     s.temperature.push_back(std::exp(log_t));
     s.log_temperature.push_back(log_t);
     s.a2.push_back(moments[i].a2());
+    s.a3.push_back(moments[i].a3());
     theta_mix += sp.density / n * theta;
   }
   if (histogram) {

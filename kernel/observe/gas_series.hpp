@@ -17,6 +17,7 @@ struct SpeciesSeries {
   std::vector<double> temperature;      // T_i = m_i <V^2> / 3 (energy units)
   std::vector<double> log_temperature;  // ln T_i, finite where T_i underflows
   std::vector<double> a2;               // (3/5) <V^4> / <V^2>^2 - 1
+  std::vector<double> a3;               // 1 + 3 a2 - (9/35) <V^6> / <V^2>^3 (third Sonine coefficient)
   std::vector<double> speed_counts;     // histogram of v* = |V| / v0 over the stationary samples
                                         // (observe/speed_histogram.hpp), output.histogram shells
 };

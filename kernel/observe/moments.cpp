@@ -5,11 +5,12 @@
 namespace granmc {
 
 SpeciesMoments species_moments(const SpeciesStore& store) noexcept {
-  CompensatedSum s2, s4, px, py, pz;
+  CompensatedSum s2, s4, s6, px, py, pz;
   store.for_each_velocity([&](const Vec3& c) {
     const double c2 = norm2(c);
     s2.add(c2);
     s4.add(c2 * c2);
+    s6.add(c2 * c2 * c2);
     px.add(c.x);
     py.add(c.y);
     pz.add(c.z);
@@ -18,6 +19,7 @@ SpeciesMoments species_moments(const SpeciesStore& store) noexcept {
   m.particles = store.size();
   m.sum_c2 = s2.value();
   m.sum_c4 = s4.value();
+  m.sum_c6 = s6.value();
   m.sum_c = {px.value(), py.value(), pz.value()};
   return m;
 }

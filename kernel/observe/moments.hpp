@@ -11,6 +11,7 @@ struct SpeciesMoments {
   std::size_t particles = 0;
   double sum_c2 = 0.0;  // sum_k |c_k|^2
   double sum_c4 = 0.0;  // sum_k |c_k|^4
+  double sum_c6 = 0.0;  // sum_k |c_k|^6
   Vec3 sum_c;           // sum_k c_k
 
   /// <c^2>
@@ -19,6 +20,12 @@ struct SpeciesMoments {
   [[nodiscard]] double a2() const noexcept {
     const double m2 = mean_c2();
     return 0.6 * (sum_c4 / static_cast<double>(particles)) / (m2 * m2) - 1.0;
+  }
+  /// Third Sonine coefficient a3 = 1 + 3 a2 - (9/35) <c^6> / <c^2>^3 (zero for a Maxwellian; from
+  /// <c^6> = (105/8)(1 + 3 a2 - a3) in units of sqrt(2T/m), docs/derivations/sonine-hcs.md).
+  [[nodiscard]] double a3() const noexcept {
+    const double m2 = mean_c2();
+    return 1.0 + 3.0 * a2() - 9.0 / 35.0 * (sum_c6 / static_cast<double>(particles)) / (m2 * m2 * m2);
   }
 };
 
