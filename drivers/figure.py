@@ -195,11 +195,12 @@ def normalise(results):
     for c in results:
         if c["points"]:
             _, g0, e0 = c["points"][0]["sim"][0]
-            for pt in c["points"]:
+            theory0 = c["points"][0]["theory"]
+            for n, pt in enumerate(c["points"]):
                 _, g, e = pt["sim"][0]
                 r = g / g0
-                pt["sim"] = [("", r, r * np.hypot(e / g, e0 / g0))]
-                pt["theory"] = {k: [v[0] / c["points"][0]["theory"][k][0]] for k, v in pt["theory"].items()}
+                pt["sim"] = [("", r, 0.0 if n == 0 else r * np.hypot(e / g, e0 / g0))]  # the reference is exactly 1
+                pt["theory"] = {k: [v[0] / theory0[k][0]] for k, v in pt["theory"].items()}
         if c["theory"]:
             ref = c["theory"][0]
             c["theory"] = [{k: [v[0] / ref[k][0]] for k, v in line.items()} for line in c["theory"]]
