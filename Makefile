@@ -6,7 +6,7 @@ PYTHON ?= /usr/bin/python3
 JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
-.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000
+.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000 fig-002-3 fig-002-4 fig-002-5 figures-002
 
 all: build
 
@@ -45,6 +45,13 @@ fig-000-2: build
 	  --theory-json results/000_fig2/theory.json --table results/000_fig2/table.md
 
 figures-000: fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5
+
+# Paper 002's figures (1D Gillespie intruder).
+fig-002-3 fig-002-4 fig-002-5: fig-002-%: build
+	$(PYTHON) drivers/figure.py drivers/scenes/002_fig$*/figure.toml --granmc $(GRANMC)
+	@if [ $* = 5 ]; then $(PYTHON) drivers/plot_intruder_tails.py results/002_fig5; fi
+
+figures-002: fig-002-3 fig-002-4 fig-002-5
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure

@@ -51,9 +51,14 @@ int explain_command(const Scene& scene, const RunArgs& args) {
   std::string absent;
   for (const std::string& a : plan.absent) absent += (absent.empty() ? "" : ", ") + a;
   if (!absent.empty()) std::printf("not compiled %s (the scene does not name them)\n", absent.c_str());
-  std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
+  if (!scene.intruder)
+    std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
               static_cast<double>(plan.particle_bytes) / 1e6, plan.replicas_in_flight,
               SpeciesStore::bytes_per_particle());
+  if (scene.intruder) {
+    std::printf("work         about %.3g collision events (one intruder per replica)\n", plan.events);
+    return exit_ok;
+  }
   const double seconds = plan.candidates / (measured_candidates_per_second * plan.replicas_in_flight);
   std::printf("work         %s%.3g candidate pairs, about %.0f s on %d threads at 1e7 candidates/s per thread\n",
               plan.candidates_upper_bound ? "at most " : "", plan.candidates, seconds, threads);

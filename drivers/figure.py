@@ -13,7 +13,9 @@ OUT/table.md (simulation with CI against theory) and OUT/figure.json (all number
 
 Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.packing_fraction).
 Plotted quantities (y): "temperature_ratio" (gamma = T_1/T_2), "temperature_ratio_relative"
-(gamma(x)/gamma(x = 0) of the same curve, 000 Fig. 5), "cumulants" (c_i = 2 a2_i per species, 000 Fig. 1).
+(gamma(x)/gamma(x = 0) of the same curve, 000 Fig. 5), "cumulants" (c_i = 2 a2_i per species, 000 Fig. 1),
+"intruder_temperature_ratio" (T/T_B of a Gillespie intruder, 002 Figs. 3-4; "alpha" then sets
+intruder.restitution).
 """
 import argparse
 import copy
@@ -60,12 +62,14 @@ def toml_text(scene):
 
 def point_scene(bases, curve, x_name, x):
     scene = copy.deepcopy(bases[curve.get("base", "")])
-    for sp, override in zip(scene["species"], curve.get("species", [])):
+    for sp, override in zip(scene.get("species", []), curve.get("species", [])):
         sp.update(override)
     for dotted, value in curve.get("set", {}).items():  # e.g. "collision.restitution" = 0.6
         table, key = dotted.split(".")
         scene.setdefault(table, {})[key] = value
-    if x_name == "alpha":
+    if x_name == "alpha" and "intruder" in scene:
+        scene["intruder"]["restitution"] = float(x)
+    elif x_name == "alpha":
         scene.setdefault("collision", {})["restitution"] = float(x)
     elif x_name == "phi":
         scene.setdefault("collision", {})["packing_fraction"] = float(x)
@@ -114,6 +118,9 @@ def simulated(summary, y):
     if y in ("temperature_ratio", "temperature_ratio_relative"):
         r = summary["temperature_ratio"]
         return [("", r["mean"], r["ci"])]
+    if y == "intruder_temperature_ratio":
+        r = summary["intruder"]["temperature_ratio"]
+        return [("", r["mean"], r["ci"])]
     if y == "cumulants":
         species = summary["species"]
         return [(f", species {sp['name']}" if len(species) > 1 else "", 2.0 * sp["a2_last_half"]["mean"],
@@ -129,6 +136,12 @@ def theoretical(th, y):
         if m:
             out["Maxwellian"] = [m["temperature_ratio_maxwell"]]
             out["first Sonine"] = [m["temperature_ratio_sonine"]]
+    elif y == "intruder_temperature_ratio":
+        i = th.get("intruder", {})
+        if "temperature_ratio_exact" in i:
+            out["exact"] = [i["temperature_ratio_exact"]]
+        if i.get("bath") == "power-law":  # the Gaussian-bath result as the reference line (002 Fig. 4)
+            out["Gaussian bath, eq. 22"] = [i["temperature_ratio_gaussian_bath"]]
     elif y == "cumulants":
         m = th.get("mixture")
         if m:
@@ -239,7 +252,8 @@ def plot(fig, results, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    styles = {"Maxwellian": ":", "first Sonine": "-", "second Sonine": "--"}
+    styles = {"Maxwellian": ":", "first Sonine": "-", "second Sonine": "--", "exact": "-",
+              "Gaussian bath, eq. 22": "--"}
     markers = ["o", "s", "^", "D", "v"]
     f, ax = plt.subplots(figsize=(6.4, 4.8))
     series = 0

@@ -216,6 +216,30 @@ void write_series(Writer& w, const std::string& path, const MeanCISeries& stats,
             what + " of each replica (rows) at each sample time (columns) (" + units + ")");
 }
 
+void write_intruder(Writer& w, const RunResult& result, const IntruderReport& in) {
+  const std::size_t replicas = result.replicas.size();
+  w.group("/intruder", "Gillespie intruder (002): attributes temperature_ratio_mean, temperature_ratio_ci (T/T_B, "
+                       "T = M v1^2, over the last half of the samples), bath_temperature, events, and "
+                       "temperature_ratio_exact where it is known (002 eq. 22; power law with M = alpha)");
+  w.attribute("/intruder", "temperature_ratio_mean", in.temperature_ratio.mean);
+  w.attribute("/intruder", "temperature_ratio_ci", in.temperature_ratio.ci);
+  w.attribute("/intruder", "bath_temperature", in.bath_temperature);
+  w.attribute("/intruder", "events", static_cast<std::int64_t>(in.events));
+  if (in.temperature_ratio_exact) w.attribute("/intruder", "temperature_ratio_exact", *in.temperature_ratio_exact);
+  w.doubles("/intruder/velocity",
+            replica_rows(result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->velocity; }),
+            {replicas, result.times.size()}, "intruder velocity v1 of each replica (rows) at each sample (columns)");
+  w.doubles("/intruder/speed_shell_edges", in.speed_shell_edges, "edges of the |v1| shells (velocity units)");
+  w.doubles("/intruder/speed_distribution_mean", in.speed_distribution.mean,
+            "replica mean of the density of |v1| per unit speed over the last half of the samples");
+  w.doubles("/intruder/speed_distribution_ci", in.speed_distribution.ci,
+            "confidence half-width of that mean, lambda_p = 3.2 (001 eq. 31)");
+  w.doubles("/intruder/speed_counts",
+            replica_rows(result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->speed_counts; }),
+            {replicas, in.speed_distribution.mean.size()},
+            "samples of |v1| counted in each shell (columns), per replica (rows)");
+}
+
 void write_contents(hid_t file, const Scene& scene, const RunResult& result, const RunReport& report) {
   Writer w(file);
   const std::size_t replicas = result.replicas.size();
@@ -286,18 +310,21 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
     }
   }
 
+  if (report.intruder) write_intruder(w, result, *report.intruder);
   std::vector<double> momentum;
   for (const ReplicaSeries& s : result.replicas)
     for (const Vec3& p : s.momentum) momentum.insert(momentum.end(), {p.x, p.y, p.z});
-  w.group("/momentum", "total momentum");
-  w.doubles("/momentum/replicas", momentum, {replicas, samples, 3},
-            "total momentum P = sum_i m_i sum_k V_k (x, y, z) of each replica at each sample time "
-            "(mass times sqrt(energy/mass))");
-  write_series(w, "/momentum_relative", report.momentum_relative,
-               replica_rows(
-                   result, [](const ReplicaSeries& s) -> const auto& { return s.momentum_relative; }),
-               replicas, "relative momentum |P| / sqrt(M 2 E_kin), centre-of-mass speed over rms speed",
-               "dimensionless");
+  if (!momentum.empty()) {  // gas runs
+    w.group("/momentum", "total momentum");
+    w.doubles("/momentum/replicas", momentum, {replicas, samples, 3},
+              "total momentum P = sum_i m_i sum_k V_k (x, y, z) of each replica at each sample time "
+              "(mass times sqrt(energy/mass))");
+    write_series(w, "/momentum_relative", report.momentum_relative,
+                 replica_rows(
+                     result, [](const ReplicaSeries& s) -> const auto& { return s.momentum_relative; }),
+                 replicas, "relative momentum |P| / sqrt(M 2 E_kin), centre-of-mass speed over rms speed",
+                 "dimensionless");
+  }
 
   w.group("/collisions", "accepted collisions");
   w.doubles("/collisions/replicas",

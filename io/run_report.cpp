@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "kernel/observe/compensated_sum.hpp"
+#include "kernel/theory/intruder.hpp"
 
 namespace granmc {
 namespace {
@@ -23,8 +24,12 @@ void check_shapes(const RunResult& result) {
     const ReplicaSeries& s = result.replicas[r];
     require_length(s.temperature.size(), samples, "temperature", r);
     require_length(s.log_temperature.size(), samples, "log_temperature", r);
-    require_length(s.momentum.size(), samples, "momentum", r);
-    require_length(s.momentum_relative.size(), samples, "momentum_relative", r);
+    if (s.intruder) {
+      require_length(s.intruder->velocity.size(), samples, "intruder velocity", r);
+    } else {
+      require_length(s.momentum.size(), samples, "momentum", r);
+      require_length(s.momentum_relative.size(), samples, "momentum_relative", r);
+    }
     require_length(s.collisions.size(), samples, "collisions", r);
     require_length(s.species.size(), species, "species", r);
     for (const SpeciesSeries& sp : s.species) {
@@ -89,6 +94,31 @@ MeanCI last_half_average(const RunResult& result, Value value) {
   return replica_mean(per_replica);
 }
 
+/// T/T_B over the last half, and the distribution of |v1| per unit speed over the same samples.
+IntruderReport intruder_report(const Scene& scene, const RunResult& result) {
+  IntruderReport out;
+  out.bath_temperature = theory::bath_temperature(*scene.intruder);
+  out.temperature_ratio_exact = theory::intruder_temperature_ratio(*scene.intruder);
+  out.temperature_ratio = last_half_average(
+      result, [&](const ReplicaSeries& s, std::size_t k) { return s.temperature[k] / out.bath_temperature; });
+  const std::size_t shells = result.replicas.front().intruder->speed_counts.size();
+  const double width = scene.histogram.radius / static_cast<double>(shells);
+  for (std::size_t k = 0; k <= shells; ++k) out.speed_shell_edges.push_back(width * static_cast<double>(k));
+  std::vector<std::vector<double>> density;
+  std::uint64_t events = 0;
+  for (const ReplicaSeries& s : result.replicas) {
+    std::vector<double> d;
+    for (double c : s.intruder->speed_counts)
+      d.push_back(c / (static_cast<double>(s.histogram_samples) * width));
+    density.push_back(std::move(d));
+    events += static_cast<std::uint64_t>(std::llround(s.collisions.back()));
+  }
+  out.speed_distribution =
+      per_index(density.size(), shells, [&](std::size_t r) -> const auto& { return density[r]; });
+  out.events = events;
+  return out;
+}
+
 }  // namespace
 
 RunReport make_run_report(const Scene& scene, const RunResult& result, double wall_seconds) {
@@ -100,8 +130,9 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
       result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; });
   report.log_temperature = per_time(
       result, [](const ReplicaSeries& s) -> const auto& { return s.log_temperature; });
-  report.momentum_relative = per_time(
-      result, [](const ReplicaSeries& s) -> const auto& { return s.momentum_relative; });
+  if (!result.replicas.front().intruder)
+    report.momentum_relative = per_time(
+        result, [](const ReplicaSeries& s) -> const auto& { return s.momentum_relative; });
   for (std::size_t i = 0; i < result.species_names.size(); ++i) {
     SpeciesReport sp;
     sp.name = result.species_names[i];
@@ -137,6 +168,7 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
       return std::exp(s.species[0].log_temperature[k] - s.species[1].log_temperature[k]);
     });
   report.theory = theory::cooling_state(scene, result.times);
+  if (scene.intruder && result.replicas.front().intruder) report.intruder = intruder_report(scene, result);
   return report;
 }
 

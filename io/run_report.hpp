@@ -34,12 +34,22 @@ struct SpeciesReport {
   MeanCISeries speed_distribution;  // Phi_i(v*) per speed shell over the last half (000 eq. 19), per d^3 v*
 };
 
+/// A Gillespie intruder run (002).
+struct IntruderReport {
+  double bath_temperature = 0.0;               // T_B = m <v^2> of the bath (m = 1)
+  MeanCI temperature_ratio;                    // T/T_B, T = M v1^2, over the last half of the samples
+  std::optional<double> temperature_ratio_exact;  // 002 eq. (22), or alpha for the power law with M = alpha
+  std::vector<double> speed_shell_edges;       // |v1| shells (velocity units)
+  MeanCISeries speed_distribution;             // density of |v1| per unit speed (twice that of v1)
+  std::uint64_t events = 0;                    // collisions, all replicas
+};
+
 struct RunReport {
   std::string method;                  // "dsmc" | "event" | "gillespie", as spelled in scene files
   double wall_seconds = 0.0;           // wall-clock time of the run, s
   MeanCISeries temperature;            // mixture T(t) = sum_i x_i T_i, energy units
   MeanCISeries log_temperature;        // <ln T>(t) over replicas (finite where T underflows)
-  MeanCISeries momentum_relative;      // |P| / sqrt(M 2 E_kin), dimensionless
+  MeanCISeries momentum_relative;      // |P| / sqrt(M 2 E_kin), dimensionless; empty for an intruder
   std::vector<SpeciesReport> species;  // in scene order
   std::vector<double> speed_shell_edges;  // v* shell edges of the speed distributions (shells + 1 values)
 
@@ -54,6 +64,8 @@ struct RunReport {
 
   /// Haff's law and the Sonine HCS a2 when the scene is a monodisperse hard-sphere cooling state.
   std::optional<theory::CoolingStatePrediction> theory;
+
+  std::optional<IntruderReport> intruder;  // method "gillespie"
 };
 
 /// Computes the report of `result`. Throws std::invalid_argument if `result` is not consistent (no

@@ -46,7 +46,16 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
   j["times"] = numbers(result.times);
   j["temperature"] = mean_ci(report.temperature);
   j["log_temperature"] = mean_ci(report.log_temperature);
-  j["momentum_relative"] = mean_ci(report.momentum_relative);
+  if (report.momentum_relative.size() > 0) j["momentum_relative"] = mean_ci(report.momentum_relative);
+  if (report.intruder) {
+    const IntruderReport& in = *report.intruder;
+    j["intruder"] = {{"temperature_ratio", mean_ci(in.temperature_ratio)},
+                     {"bath_temperature", number(in.bath_temperature)},
+                     {"events", in.events},
+                     {"speed_shell_edges", numbers(in.speed_shell_edges)},
+                     {"speed_distribution", mean_ci(in.speed_distribution)}};
+    if (in.temperature_ratio_exact) j["intruder"]["temperature_ratio_exact"] = number(*in.temperature_ratio_exact);
+  }
   nlohmann::json species = nlohmann::json::array();
   for (const SpeciesReport& sp : report.species)
     species.push_back({{"name", sp.name},

@@ -2,6 +2,7 @@
 
 #include "kernel/collide/enskog_chi.hpp"
 #include "kernel/schemes/sample_times.hpp"
+#include "kernel/theory/intruder.hpp"
 #include "kernel/theory/sonine.hpp"
 
 namespace granmc {
@@ -43,6 +44,18 @@ nlohmann::json scene_theory_json(const Scene& scene) {
     j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell},
                     {"temperature_ratio_sonine", m->temperature_ratio_sonine},
                     {"a2_sonine", {m->a2_sonine[0], m->a2_sonine[1]}}};
+  }
+  if (scene.intruder) {
+    const IntruderConfig& in = *scene.intruder;
+    // 002 eq. (22), the Gaussian-bath result, also as the reference line of 002 Fig. 4 for other baths.
+    j["intruder"] = {{"bath", in.bath == BathKind::gaussian ? "gaussian" : "power-law"},
+                     {"bath_temperature", theory::bath_temperature(in)},
+                     {"temperature_ratio_gaussian_bath",
+                      (1.0 + in.restitution) / (2.0 + (1.0 - in.restitution) / in.mass)}};
+    if (const auto exact = theory::intruder_temperature_ratio(*scene.intruder)) {
+      applies.push_back("1D intruder: exact stationary T/T_B (002 eq. 22, or alpha for the power law with M = alpha)");
+      j["intruder"]["temperature_ratio_exact"] = *exact;
+    }
   }
   if (scene.thermostat.kind == ThermostatKind::white_noise && scene.species.size() == 1 &&
       scene.collision.kernel == CollisionKernel::hard_sphere) {

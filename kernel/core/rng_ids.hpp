@@ -10,6 +10,7 @@ namespace granmc {
 enum class RngPurpose : std::uint16_t {
   initial_velocity = 1,  // sub = species, step = 0, index = particle
   collision_pair = 2,    // sub = 0, step = time step, index = 2 s and 2 s + 1 for candidate s of the step
+  intruder_event = 3,    // sub = 0, step = event, index = 0 (waiting time, side), 1, 2, ... (sampling attempts)
 };
 
 }  // namespace granmc

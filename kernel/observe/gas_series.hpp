@@ -2,6 +2,7 @@
 // What a gas replica records at each sample time, and the run's results over all replicas.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,21 +23,31 @@ struct SpeciesSeries {
                                         // (observe/speed_histogram.hpp), output.histogram shells
 };
 
+/// What an intruder replica records (method "gillespie", 002).
+struct IntruderSeries {
+  std::vector<double> velocity;           // v1 at each sample time (1D)
+  std::vector<double> speed_counts;       // histogram of |v1| over the stationary samples (output.histogram,
+                                          // radius in velocity units)
+  std::uint64_t sampling_attempts = 0;    // rejection attempts for the colliding bath velocities
+};
+
 struct ReplicaSeries {
-  std::vector<double> temperature;         // mixture T = sum_i x_i T_i
+  std::vector<double> temperature;         // mixture T = sum_i x_i T_i (intruder: T = M v1^2 per degree
+                                           // of freedom)
   std::vector<double> log_temperature;     // ln T
   std::vector<SpeciesSeries> species;
-  std::vector<Vec3> momentum;              // total momentum sum_i m_i sum_k V_k (scene units)
+  std::vector<Vec3> momentum;              // total momentum sum_i m_i sum_k V_k (scene units); gas only
   std::vector<double> momentum_relative;   // |P| / sqrt(M_total 2 E_kin): centre-of-mass speed / rms speed
   std::vector<double> collisions;          // accepted collisions since t = 0, at each sample
   std::vector<std::uint64_t> pair_collisions;  // accepted collisions per ordered species pair (i, j),
                                                // in the order i * species + j, whole run
-  std::uint64_t histogram_samples = 0;     // samples added to the speed histograms
+  std::uint64_t histogram_samples = 0;     // samples added to the speed histograms (gas or intruder)
   std::uint64_t candidates = 0;            // candidate pairs tested
   std::uint64_t majorant_updates = 0;      // times omega_max was raised (000 sec. 3)
   std::vector<double> majorant_growth;     // per ordered pair: final / initial omega_max (stored units)
   std::uint64_t rescales = 0;              // velocity rescalings (long cooling runs)
   double momentum_removed_relative = 0.0;  // sum over rescalings of the removed |P| / sqrt(M 2 E)
+  std::optional<IntruderSeries> intruder;  // method "gillespie"
 };
 
 struct RunResult {

@@ -7,6 +7,7 @@
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/species_store.hpp"
 #include "kernel/schemes/dispatch.hpp"
+#include "kernel/theory/intruder.hpp"
 #include "kernel/theory/scene_theory.hpp"
 
 namespace granmc {
@@ -30,6 +31,17 @@ double expected_max_speed(double particles) {
 RunPlan plan_run(const Scene& scene, int threads) {
   RunPlan plan;
   plan.instantiation = instantiation_name(scene);
+  plan.replicas_in_flight = std::max(1, std::min(threads, scene.run.replicas));
+  if (scene.intruder) {  // Gillespie: one intruder per replica; work = collision events
+    const IntruderConfig& in = *scene.intruder;
+    plan.effects.push_back(in.bath == BathKind::gaussian ? "Gaussian bath (002 eq. 18)" : "power-law bath (002 eq. 23)");
+    plan.effects.push_back("colliding bath velocities sampled exactly (no window)");
+    // Mean collision rate rho <|v1 - v|> with both Maxwellian at T_B: rho sqrt(2 T_B (1 + 1/M) / pi).
+    const double tb = theory::bath_temperature(in);
+    plan.events = scene.run.replicas * scene.run.t_end * in.bath_density *
+                  std::sqrt(2.0 * tb * (1.0 + 1.0 / in.mass) / std::numbers::pi);
+    return plan;
+  }
   plan.effects.push_back(scene.species.size() == 1
                              ? "one species"
                              : "two species: 4 ordered pairs, candidates interleaved within each step");
@@ -45,7 +57,6 @@ RunPlan plan_run(const Scene& scene, int threads) {
   if (!scene.relaxation) plan.absent.push_back("relaxation term");
   if (scene.collision.packing_fraction == 0.0) plan.absent.push_back("Enskog chi");
 
-  plan.replicas_in_flight = std::max(1, std::min(threads, scene.run.replicas));
   std::uint64_t particles = 0;
   for (const SpeciesConfig& s : scene.species) particles += static_cast<std::uint64_t>(s.particles);
   plan.particle_bytes = particles * SpeciesStore::bytes_per_particle() * plan.replicas_in_flight;

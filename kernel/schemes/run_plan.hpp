@@ -15,7 +15,8 @@ struct RunPlan {
   std::vector<std::string> absent;     // effects the scene does not name (not compiled into the run)
   std::uint64_t particle_bytes = 0;    // particle memory of the replicas in flight at once
   int replicas_in_flight = 1;          // min(threads, replicas)
-  double candidates = 0.0;             // estimated candidate pairs, all replicas
+  double candidates = 0.0;             // estimated candidate pairs, all replicas (gas)
+  double events = 0.0;                 // estimated collision events, all replicas (intruder)
   bool candidates_upper_bound = false; // true when the estimate assumes T stays at T(0)
 };
 

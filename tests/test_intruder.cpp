@@ -1,0 +1,104 @@
+// The Gillespie intruder in 1D (002 sec. 3.1) against its exact results: T/T_B = (1 + alpha) /
+// (2 + (1 - alpha)/M) with a Gaussian velocity law in a Gaussian bath (002 eq. 22, Martin and Piasecki),
+// and, in the power-law bath with M = alpha, the intruder's law equal to the bath's (T = alpha T_B).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "kernel/collide/bath_power_law.hpp"
+#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/schemes/dispatch.hpp"
+#include "kernel/theory/intruder.hpp"
+
+using namespace granmc;
+
+namespace {
+
+Scene intruder_scene(BathKind bath, double mass, double alpha, double t_end) {
+  Scene s;
+  s.run.method = Method::gillespie;
+  s.run.seed = 4242;
+  s.run.replicas = 32;  // enough for the empirical variance behind the CI to be itself reliable
+  s.run.t_end = t_end;
+  s.run.samples = static_cast<int>(t_end);  // one observation per unit time, about one per collision
+  IntruderConfig in;
+  in.mass = mass;
+  in.restitution = alpha;
+  in.bath = bath;
+  in.bath_a = 0.8;
+  in.bath_density = 1.5;
+  s.intruder = in;
+  return s;
+}
+
+/// Per replica, the time average of value(v1) over the last half of the samples; then mean and CI.
+template <class F>
+MeanCI velocity_average(const RunResult& r, F value) {
+  std::vector<double> per_replica;
+  for (const ReplicaSeries& rep : r.replicas) {
+    const std::vector<double>& v = rep.intruder->velocity;
+    double sum = 0.0;
+    const std::size_t first = first_stationary_sample(v.size());
+    for (std::size_t k = first; k < v.size(); ++k) sum += value(v[k]);
+    per_replica.push_back(sum / static_cast<double>(v.size() - first));
+  }
+  return replica_mean(per_replica);
+}
+
+}  // namespace
+
+TEST(Intruder, GaussianBathTemperatureRatioIsExact) {
+  for (double mass : {0.2, 1.0, 5.0}) {
+    for (double alpha : {0.0, 0.5, 0.9, 1.0}) {
+      const Scene s = intruder_scene(BathKind::gaussian, mass, alpha, 60000.0);
+      const RunResult r = run_scene(s, {});
+      const double tb = theory::bath_temperature(*s.intruder);
+      const MeanCI t = velocity_average(r, [&](double v) { return mass * v * v / tb; });
+      const double exact = *theory::intruder_temperature_ratio(*s.intruder);  // 002 eq. (22)
+      std::printf("[ measured ] M = %.1f alpha = %.1f: T/T_B = %.4f +- %.4f, exact %.4f\n", mass, alpha, t.mean, t.ci,
+                  exact);
+      EXPECT_NEAR(t.mean, exact, t.ci) << "M = " << mass << ", alpha = " << alpha;
+      EXPECT_LT(t.ci, 0.02 * exact);
+      // The law is Gaussian (Martin and Piasecki): <v^4> = 3 <v^2>^2.
+      const MeanCI v4 = velocity_average(r, [&](double v) { return std::pow(mass * v * v / (exact * tb), 2); });
+      EXPECT_NEAR(v4.mean, 3.0, v4.ci) << "M = " << mass << ", alpha = " << alpha;
+    }
+  }
+}
+
+TEST(Intruder, PowerLawBathWithMassEqualToAlphaGivesTheBathLaw) {
+  // 002 sec. 3.1: for M = alpha the stationary law of v1 is the bath's, eq. (23) with the same a, so
+  // T = M <v1^2> = alpha / a = alpha T_B. Checked on the distribution (bounded observables: P(|v| < c) per
+  // replica), since <v^4> is infinite and the CI of T = M <v^2> would not be trustworthy.
+  const double alpha = 0.5;
+  const Scene s = intruder_scene(BathKind::power_law, alpha, alpha, 60000.0);
+  const RunResult r = run_scene(s, {});
+  const double a = s.intruder->bath_a;  // the intruder's law: eq. (23) with the bath's a
+  for (double c : {0.3, 0.8, 1.5, 3.0, 8.0}) {
+    const MeanCI p = velocity_average(r, [&](double v) { return std::fabs(v) < c ? 1.0 : 0.0; });
+    const double x = std::sqrt(a) * c;
+    const double exact = 2.0 * std::numbers::sqrt2 / std::numbers::pi * PowerLawBath::quartic_integral(x);
+    std::printf("[ measured ] P(|v| < %.1f) = %.4f +- %.4f, exact %.4f\n", c, p.mean, p.ci, exact);
+    EXPECT_NEAR(p.mean, exact, p.ci) << "c = " << c;
+  }
+  const double tb = theory::bath_temperature(*s.intruder);
+  const MeanCI t = velocity_average(r, [&](double v) { return alpha * v * v / tb; });
+  std::printf("[ measured ] T/T_B = %.4f +- %.4f (heavy tail: CI indicative), exact %.4f\n", t.mean, t.ci, alpha);
+}
+
+TEST(Intruder, OneAndTwoThreadsGiveTheSameBits) {
+  Scene s = intruder_scene(BathKind::power_law, 0.7, 0.3, 2000.0);
+  s.run.replicas = 3;
+  RunOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const RunResult a = run_scene(s, one), b = run_scene(s, two);
+  for (std::size_t r = 0; r < a.replicas.size(); ++r) {
+    const auto& x = a.replicas[r].intruder->velocity;
+    const auto& y = b.replicas[r].intruder->velocity;
+    ASSERT_EQ(x.size(), y.size());
+    EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)), 0);
+  }
+}
