@@ -30,6 +30,24 @@ Scene cooling_scene() {
   return s;
 }
 
+/// Per replica, the time average of value(species, k) once the scaled state is stationary (t >= 5: about
+/// 20 collisions per particle, while a2 and a3 relax within a few); then the replica mean and its CI.
+template <class Value>
+MeanCI stationary_average(const RunResult& r, Value value) {
+  std::vector<double> per_replica;
+  for (const ReplicaSeries& rep : r.replicas) {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = 0; k < r.times.size(); ++k)
+      if (r.times[k] >= 5.0) {
+        sum += value(rep.species[0], k);
+        ++count;
+      }
+    per_replica.push_back(sum / count);
+  }
+  return replica_mean(per_replica);
+}
+
 class CoolingState : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -70,19 +88,10 @@ TEST_F(CoolingState, HaffLawWithinConfidenceAndSonineError) {
 }
 
 TEST_F(CoolingState, A3IsZeroForTheMaxwellianStartAndNegativeInTheCoolingState) {
-  std::vector<double> start, late;
-  for (const ReplicaSeries& rep : result_->replicas) {
-    start.push_back(rep.species[0].a3.front());
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k = 0; k < result_->times.size(); ++k)
-      if (result_->times[k] >= 5.0) {
-        sum += rep.species[0].a3[k];
-        ++count;
-      }
-    late.push_back(sum / count);
-  }
-  const MeanCI s = replica_mean(start), l = replica_mean(late);
+  std::vector<double> start;
+  for (const ReplicaSeries& rep : result_->replicas) start.push_back(rep.species[0].a3.front());
+  const MeanCI s = replica_mean(start);
+  const MeanCI l = stationary_average(*result_, [](const SpeciesSeries& sp, std::size_t k) { return sp.a3[k]; });
   std::printf("[ measured ] a3 at t = 0: %.5f +- %.5f; stationary %.5f +- %.5f (second Sonine %.5f)\n", s.mean, s.ci,
               l.mean, l.ci, theory_->a3_second_sonine);
   EXPECT_NEAR(s.mean, 0.0, s.ci);  // a Maxwellian start has a3 = 0
@@ -90,20 +99,7 @@ TEST_F(CoolingState, A3IsZeroForTheMaxwellianStartAndNegativeInTheCoolingState) 
 }
 
 TEST_F(CoolingState, A2MatchesSonineWithinConfidenceAndModelError) {
-  // Time average per replica once the scaled state is stationary (t >= 5: about 20 collisions per
-  // particle, while a2 relaxes within a few), then the replica mean and its CI.
-  std::vector<double> a2;
-  for (const ReplicaSeries& rep : result_->replicas) {
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k = 0; k < result_->times.size(); ++k)
-      if (result_->times[k] >= 5.0) {
-        sum += rep.species[0].a2[k];
-        ++count;
-      }
-    a2.push_back(sum / count);
-  }
-  const MeanCI m = replica_mean(a2);
+  const MeanCI m = stationary_average(*result_, [](const SpeciesSeries& sp, std::size_t k) { return sp.a2[k]; });
   std::printf("[ measured ] a2 = %.5f +- %.5f (first Sonine %.5f, model error %.5f; second Sonine %.5f)\n", m.mean,
               m.ci, theory_->a2, theory_->a2_model_error, theory_->a2_second_sonine);
   EXPECT_NEAR(m.mean, theory_->a2, m.ci + theory_->a2_model_error) << "ci " << m.ci;
