@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -36,6 +35,7 @@
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
+#include "perf/bench_common.hpp"
 #include "perf/naive_dsmc.hpp"
 
 namespace {
@@ -239,61 +239,24 @@ void naive_draws(benchmark::State& bs) {
 
 // ---- ratio table ---------------------------------------------------------------------------------
 
-struct Figures {
-  double candidates = 0.0, collisions = 0.0, acceptance = 0.0;
-};
-
-/// The console reporter, remembering each benchmark's figures (the median when there are repetitions).
-class RecordingReporter : public benchmark::ConsoleReporter {
- public:
-  explicit RecordingReporter(bool color) : ConsoleReporter(color ? OO_ColorTabular : OO_Tabular) {}
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.error_occurred) continue;
-      if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
-      Figures f;
-      f.candidates = counter(r, "candidates/s");
-      f.collisions = counter(r, "collisions/s");
-      f.acceptance = counter(r, "acceptance");
-      figures[r.run_name.function_name][r.run_name.args] = f;  // a median replaces the single runs
-    }
-  }
-  std::map<std::string, std::map<std::string, Figures>> figures;
-
- private:
-  static double counter(const Run& r, const char* name) {
-    const auto it = r.counters.find(name);
-    return it == r.counters.end() ? 0.0 : it->second.value;
-  }
-};
-
-void print_ratio_table(const RecordingReporter& rep) {
-  const auto find = [&](const char* name) -> const std::map<std::string, Figures>* {
-    const auto it = rep.figures.find(name);
-    return it == rep.figures.end() || it->second.empty() ? nullptr : &it->second;
-  };
-  const auto* g = find("granmc_collide");
-  const auto* n = find("naive_collide");
-  if (g != nullptr && n != nullptr) {
+void print_ratio_table(const perf::RecordingReporter& rep) {
+  const auto granmc = rep.counters.find("granmc_collide");
+  if (granmc != rep.counters.end() && rep.counters.count("naive_collide")) {
     std::printf("\nCollision stage, alpha = %.1f, %llu candidates per iteration (median of the repetitions)\n",
                 kRestitution, static_cast<unsigned long long>(kCandidatesPerIteration));
     std::printf("| N | granmc candidates/s | naive candidates/s | ratio | granmc collisions/s | "
                 "naive collisions/s | ratio | acceptance granmc / naive |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
-    for (const auto& [args, gf] : *g) {
-      const auto nf = n->find(args);
-      if (nf == n->end()) continue;
-      std::printf("| %s | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f | %.4f / %.4f |\n", args.c_str(), gf.candidates,
-                  nf->second.candidates, gf.candidates / nf->second.candidates, gf.collisions,
-                  nf->second.collisions, gf.collisions / nf->second.collisions, gf.acceptance,
-                  nf->second.acceptance);
+    for (const auto& [args, unused] : granmc->second) {
+      const auto g = [&](const char* c) { return rep.value("granmc_collide", args, c); };
+      const auto n = [&](const char* c) { return rep.value("naive_collide", args, c); };
+      std::printf("| %s | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f | %.4f / %.4f |\n", args.c_str(),
+                  g("candidates/s"), n("candidates/s"), g("candidates/s") / n("candidates/s"), g("collisions/s"),
+                  n("collisions/s"), g("collisions/s") / n("collisions/s"), g("acceptance"), n("acceptance"));
     }
   }
-  const auto* gd = find("granmc_draws");
-  const auto* nd = find("naive_draws");
-  if (gd != nullptr && nd != nullptr) {
-    const double a = gd->begin()->second.candidates, b = nd->begin()->second.candidates;
+  const double a = rep.value("granmc_draws", "", "candidates/s"), b = rep.value("naive_draws", "", "candidates/s");
+  if (!std::isnan(a) && !std::isnan(b)) {
     std::printf("\nRandom draws alone (no particle memory): granmc %.3g candidates/s (%.1f ns each), "
                 "naive %.3g candidates/s (%.1f ns each), ratio %.2f\n",
                 a, 1e9 / a, b, 1e9 / b, a / b);
@@ -303,16 +266,7 @@ void print_ratio_table(const RecordingReporter& rep) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Defaults first, so that the user's flags (later on the line) override them.
-  std::vector<std::string> defaults = {"--benchmark_repetitions=3", "--benchmark_report_aggregates_only=true",
-                                       "--benchmark_min_time=1.0"};
-  std::vector<char*> args;
-  args.push_back(argv[0]);
-  for (std::string& d : defaults) args.push_back(d.data());
-  for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
-  int n_args = static_cast<int>(args.size());
-  benchmark::Initialize(&n_args, args.data());
-  if (benchmark::ReportUnrecognizedArguments(n_args, args.data())) return 1;
+  if (!perf::initialize(argc, argv, "1.0")) return 1;
 
   // Same size next to each other, so that only one gas of each kind is alive at a time.
   for (const std::int64_t n : kSizes) {
@@ -323,7 +277,7 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("granmc_draws", granmc_draws)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("naive_draws", naive_draws)->Unit(benchmark::kMillisecond);
 
-  RecordingReporter reporter(isatty(STDOUT_FILENO) != 0);
+  perf::RecordingReporter reporter(isatty(STDOUT_FILENO) != 0);
   benchmark::RunSpecifiedBenchmarks(&reporter);
   print_ratio_table(reporter);
   benchmark::Shutdown();

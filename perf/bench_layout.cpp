@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +26,7 @@
 #include <unistd.h>
 
 #include "kernel/core/aligned_buffer.hpp"
+#include "perf/bench_common.hpp"
 
 namespace {
 
@@ -197,33 +197,16 @@ void layout_pairs(benchmark::State& bs) {
 
 // ---- ratio table ---------------------------------------------------------------------------------
 
-/// The console reporter, remembering each benchmark's pairs/s (the median when there are repetitions).
-class RecordingReporter : public benchmark::ConsoleReporter {
- public:
-  explicit RecordingReporter(bool color) : ConsoleReporter(color ? OO_ColorTabular : OO_Tabular) {}
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.error_occurred) continue;
-      if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
-      const auto it = r.counters.find("pairs/s");
-      if (it != r.counters.end()) rate[r.run_name.args][r.run_name.function_name] = it->second.value;
-    }
-  }
-  std::map<std::string, std::map<std::string, double>> rate;  // [N][benchmark]
-};
-
-void print_ratio_table(const RecordingReporter& rep) {
+void print_ratio_table(const granmc::perf::RecordingReporter& rep) {
   std::printf("\nRandom pair gather + scatter, %llu pairs per iteration (median of the repetitions)\n",
               static_cast<unsigned long long>(kPairsPerIteration));
   std::printf("| N | SoA pairs/s | packed pairs/s | packed / SoA | SoA+prefetch pairs/s | "
               "packed+prefetch pairs/s | packed+prefetch / packed |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
-  for (const auto& [args, r] : rep.rate) {
-    const auto get = [&](const char* name) {
-      const auto it = r.find(name);
-      return it == r.end() ? std::nan("") : it->second;
-    };
+  const auto soa_runs = rep.counters.find("layout_soa");
+  if (soa_runs == rep.counters.end()) return;
+  for (const auto& [args, unused] : soa_runs->second) {
+    const auto get = [&](const char* name) { return rep.value(name, args, "pairs/s"); };
     const double soa = get("layout_soa"), packed = get("layout_packed");
     const double soa_p = get("layout_soa_prefetch"), packed_p = get("layout_packed_prefetch");
     std::printf("| %s | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f |\n", args.c_str(), soa, packed, packed / soa,
@@ -234,16 +217,7 @@ void print_ratio_table(const RecordingReporter& rep) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Defaults first, so that the user's flags (later on the line) override them.
-  std::vector<std::string> defaults = {"--benchmark_repetitions=3", "--benchmark_report_aggregates_only=true",
-                                       "--benchmark_min_time=0.5"};
-  std::vector<char*> args;
-  args.push_back(argv[0]);
-  for (std::string& d : defaults) args.push_back(d.data());
-  for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
-  int n_args = static_cast<int>(args.size());
-  benchmark::Initialize(&n_args, args.data());
-  if (benchmark::ReportUnrecognizedArguments(n_args, args.data())) return 1;
+  if (!granmc::perf::initialize(argc, argv, "0.5")) return 1;
 
   for (const std::int64_t n : kSizes) {
     benchmark::RegisterBenchmark("layout_soa", layout_pairs<SoaLayout, false>)->Arg(n)->Unit(benchmark::kMillisecond);
@@ -258,7 +232,7 @@ int main(int argc, char** argv) {
         ->Unit(benchmark::kMillisecond);
   }
 
-  RecordingReporter reporter(isatty(STDOUT_FILENO) != 0);
+  granmc::perf::RecordingReporter reporter(isatty(STDOUT_FILENO) != 0);
   benchmark::RunSpecifiedBenchmarks(&reporter);
   print_ratio_table(reporter);
   benchmark::Shutdown();
