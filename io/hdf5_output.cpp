@@ -334,11 +334,12 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
             "cumulative accepted collisions since t = 0 of each replica (rows) at each sample time (columns), "
             "a count stored as double");
 
-  std::vector<std::uint64_t> candidates, majorant_updates, rescales;
+  std::vector<std::uint64_t> candidates, majorant_updates, majorant_violations, rescales;
   std::vector<double> momentum_removed;
   for (const ReplicaSeries& s : result.replicas) {
     candidates.push_back(s.candidates);
     majorant_updates.push_back(s.majorant_updates);
+    majorant_violations.push_back(s.majorant_violations);
     rescales.push_back(s.rescales);
     momentum_removed.push_back(s.momentum_removed_relative);
   }
@@ -361,6 +362,9 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
               "i * species + j), whole run (count)");
   w.uint64s("/counters/majorant_updates", majorant_updates,
             "times each replica raised its collision majorant omega_max (count)");
+  w.uint64s("/counters/majorant_violations", majorant_violations,
+            "event scheme: candidates whose relative speed exceeded the majorant U_max their waiting time "
+            "was drawn with, per replica (count; 0 means the thinning was exact)");
   w.uint64s("/counters/rescales", rescales, "velocity rescalings of each replica in long cooling runs (count)");
   w.doubles("/counters/momentum_removed_relative", momentum_removed,
             "sum over rescalings of the removed centre-of-mass momentum |P| / sqrt(M 2 E_kin) per replica "

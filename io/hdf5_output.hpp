@@ -17,7 +17,7 @@
 //   /momentum/replicas        [R x S x 3]
 //   /momentum_relative/{mean,ci} [S], /momentum_relative/replicas [R x S]
 //   /collisions/replicas      [R x S], cumulative accepted collisions (stored as double, exact below 2^53)
-//   /counters/{candidates,majorant_updates,rescales,histogram_samples} [R] uint64,
+//   /counters/{candidates,majorant_updates,majorant_violations,rescales,histogram_samples} [R] uint64,
 //   /counters/pair_collisions [R x P] uint64 (P ordered species pairs), /counters/momentum_removed_relative [R]
 //   /temperature_ratio        scalar group with attributes mean, ci (two species only)
 //   /theory/                  attributes a2_sonine, a2_model_error, a2_second_sonine, a3_second_sonine,

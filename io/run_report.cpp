@@ -160,6 +160,7 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
     if (!s.collisions.empty()) report.collisions += static_cast<std::uint64_t>(std::llround(s.collisions.back()));
     report.candidates += s.candidates;
     report.majorant_updates += s.majorant_updates;
+    report.majorant_violations += s.majorant_violations;
     report.rescales += s.rescales;
   }
   // T_1/T_2 as exp(ln T_1 - ln T_2), finite when both temperatures underflow in a long cooling run.

@@ -40,6 +40,7 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
   j["collisions"] = report.collisions;
   j["candidates"] = report.candidates;
   j["majorant_updates"] = report.majorant_updates;
+  if (report.method == "event") j["majorant_violations"] = report.majorant_violations;
   j["rescales"] = report.rescales;
   j["threads"] = result.threads;
   j["version"] = granmc::version;

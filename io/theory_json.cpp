@@ -4,6 +4,7 @@
 #include "kernel/schemes/sample_times.hpp"
 #include "kernel/theory/intruder.hpp"
 #include "kernel/theory/sonine.hpp"
+#include "kernel/theory/white_noise.hpp"
 
 namespace granmc {
 
@@ -57,8 +58,40 @@ nlohmann::json scene_theory_json(const Scene& scene) {
       j["intruder"]["temperature_ratio_exact"] = *exact;
     }
   }
-  if (scene.thermostat.kind == ThermostatKind::white_noise && scene.species.size() == 1 &&
-      scene.collision.kernel == CollisionKernel::hard_sphere) {
+  if (scene.species.size() == 1 && scene.collision.rate > 0.0) {  // the kernel form of 001
+    const double alpha = scene.collision.restitution[0][0], rate = scene.collision.rate;
+    const double beta = scene.thermostat.kind == ThermostatKind::white_noise ? scene.thermostat.beta : 0.0;
+    const double lambda = scene.collision.lambda;
+    j["times"] = times;
+    if (lambda == 0.0) {
+      applies.push_back("Maxwell pseudomolecules: exact temperature relaxation (001 eqs. 16-17), and (1 - 1/n) "
+                        "times it for the n-particle system (docs/physics.md)");
+      const double n = static_cast<double>(scene.species[0].particles);
+      std::vector<double> exact, particles;
+      for (double t : times) {
+        exact.push_back(theory::maxwell_temperature(t, scene.initial_temperature, beta, rate, alpha));
+        particles.push_back(
+            theory::maxwell_temperature_particles(t, scene.initial_temperature, beta, rate, alpha, n));
+      }
+      j["maxwell_relaxation"] = {{"rate", theory::maxwell_relaxation_rate(rate, alpha)},
+                                 {"temperature", exact},
+                                 {"temperature_particles", particles}};
+    }
+    if (beta > 0.0) {
+      applies.push_back("white-noise heated steady state: temperature from the energy balance (001 eq. 15), "
+                        "tail exponent b = 1 + lambda/2 (001 eqs. 19-21)");
+      nlohmann::json w = {{"tail_exponent", theory::tail_exponent(lambda)},
+                          {"steady_temperature_maxwellian",
+                           theory::white_noise_steady_temperature(lambda, rate, alpha, beta, 0.0)}};
+      if (lambda == 1.0) {
+        const double a2 = theory::white_noise_a2(alpha);
+        w["a2"] = a2;
+        w["steady_temperature_first_sonine"] = theory::white_noise_steady_temperature(lambda, rate, alpha, beta, a2);
+      }
+      j["white_noise"] = w;
+    }
+  } else if (scene.thermostat.kind == ThermostatKind::white_noise && scene.species.size() == 1 &&
+             scene.collision.kernel == CollisionKernel::hard_sphere) {
     applies.push_back("white-noise heated steady state, monodisperse hard spheres: first-Sonine a2");
     j["white_noise"] = {{"a2", theory::white_noise_a2(scene.collision.restitution[0][0])}};
   }

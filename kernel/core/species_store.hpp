@@ -34,6 +34,10 @@ class SpeciesStore {
     r.v[1] = v.y;
     r.v[2] = v.z;
   }
+  /// The time of particle k's last lazy update (event scheme, 001 sec. 4: particles are (v_j, t_j)).
+  [[nodiscard]] double last_update(std::size_t k) const noexcept { return records_[k].aux; }
+  void set_last_update(std::size_t k, double t) noexcept { records_[k].aux = t; }
+
   /// Hint that particle k will be read soon (random pair selection is memory-latency bound).
   void prefetch(std::size_t k) const noexcept { __builtin_prefetch(&records_[k], 1, 3); }
 

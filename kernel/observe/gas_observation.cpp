@@ -7,9 +7,9 @@
 
 namespace granmc {
 
-std::vector<SpeciesMoments> gas_moments(const GasState& state) {
+std::vector<SpeciesMoments> gas_moments(const GasState& state, const Vec3& centre) {
   std::vector<SpeciesMoments> m;
-  for (const SpeciesStore& s : state.species) m.push_back(species_moments(s));
+  for (const SpeciesStore& s : state.species) m.push_back(species_moments(s, centre));
   return m;
 }
 
@@ -26,7 +26,10 @@ GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& mome
 
 void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram) {
   const double n = total_density(scene);
-  const std::vector<SpeciesMoments> moments = gas_moments(state);
+  // Temperatures and cumulants are of the peculiar velocity, about the mixture's flow velocity: zero to
+  // rounding where collisions conserve momentum, but not under white noise (001 eq. 13, Remark 1).
+  const GasTotals totals = gas_totals(scene, gas_moments(state));
+  const std::vector<SpeciesMoments> moments = gas_moments(state, (1.0 / totals.mass) * totals.momentum);
   double theta_mix = 0.0;  // sum_i x_i m_i <c^2> / 3, the mixture temperature in stored units
   for (std::size_t i = 0; i < moments.size(); ++i) {
     const SpeciesConfig& sp = scene.species[i];
@@ -40,7 +43,7 @@ void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& serie
     theta_mix += sp.density / n * theta;
   }
   if (histogram) {
-    const double unit = scaled_speed_unit(scene, theta_mix);
+    const double unit = histogram_speed_unit(scene, state.scale, theta_mix);
     for (std::size_t i = 0; i < moments.size(); ++i) {
       std::vector<double>& counts = series.species[i].speed_counts;
       counts.resize(static_cast<std::size_t>(scene.histogram.shells), 0.0);
@@ -48,7 +51,6 @@ void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& serie
     }
     ++series.histogram_samples;
   }
-  const GasTotals totals = gas_totals(scene, moments);
   const double log_t = state.scale.log_temperature(theta_mix);
   series.temperature.push_back(std::exp(log_t));
   series.log_temperature.push_back(log_t);

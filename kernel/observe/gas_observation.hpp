@@ -13,8 +13,8 @@ namespace granmc {
 /// `histogram`, also adds the scaled speeds to each species' speed_counts.
 void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram);
 
-/// The moments of every species of `state`, in species order.
-std::vector<SpeciesMoments> gas_moments(const GasState& state);
+/// The moments of every species of `state` about `centre` (stored units), in species order.
+std::vector<SpeciesMoments> gas_moments(const GasState& state, const Vec3& centre = {});
 
 /// Mass-weighted sums over all species in stored units, used to observe and to rescale.
 struct GasTotals {
@@ -22,6 +22,7 @@ struct GasTotals {
   double twice_energy = 0.0;  // sum_i m_i sum_k |c_k|^2
   Vec3 momentum;              // sum_i m_i sum_k c_k
 };
+/// (The moments must be about the origin.)
 GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& moments) noexcept;
 
 }  // namespace granmc

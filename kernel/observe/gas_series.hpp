@@ -43,7 +43,9 @@ struct ReplicaSeries {
                                                // in the order i * species + j, whole run
   std::uint64_t histogram_samples = 0;     // samples added to the speed histograms (gas or intruder)
   std::uint64_t candidates = 0;            // candidate pairs tested
-  std::uint64_t majorant_updates = 0;      // times omega_max was raised (000 sec. 3)
+  std::uint64_t majorant_updates = 0;      // times omega_max (U_max for the event scheme) was raised
+  std::uint64_t majorant_violations = 0;   // event scheme: candidates whose relative speed exceeded the
+                                           // U_max their waiting time was drawn with (schemes/event_white_noise.hpp)
   std::vector<double> majorant_growth;     // per ordered pair: final / initial omega_max (stored units)
   std::uint64_t rescales = 0;              // velocity rescalings (long cooling runs)
   double momentum_removed_relative = 0.0;  // sum over rescalings of the removed |P| / sqrt(M 2 E)

@@ -4,10 +4,10 @@
 
 namespace granmc {
 
-SpeciesMoments species_moments(const SpeciesStore& store) noexcept {
+SpeciesMoments species_moments(const SpeciesStore& store, const Vec3& centre) noexcept {
   CompensatedSum s2, s4, s6, px, py, pz;
   store.for_each_velocity([&](const Vec3& c) {
-    const double c2 = norm2(c);
+    const double c2 = norm2(c - centre);
     s2.add(c2);
     s4.add(c2 * c2);
     s6.add(c2 * c2 * c2);

@@ -1,5 +1,6 @@
 #pragma once
-// Velocity moments of one species, in stored (scaled) units, with compensated sums.
+// Velocity moments of one species, in stored (scaled) units, with compensated sums, about a given
+// centre (the flow velocity, for peculiar-velocity moments; 001 eq. 13 subtracts the bulk velocity).
 #include <cstddef>
 
 #include "kernel/core/species_store.hpp"
@@ -9,10 +10,10 @@ namespace granmc {
 
 struct SpeciesMoments {
   std::size_t particles = 0;
-  double sum_c2 = 0.0;  // sum_k |c_k|^2
-  double sum_c4 = 0.0;  // sum_k |c_k|^4
-  double sum_c6 = 0.0;  // sum_k |c_k|^6
-  Vec3 sum_c;           // sum_k c_k
+  double sum_c2 = 0.0;  // sum_k |c_k - centre|^2
+  double sum_c4 = 0.0;  // sum_k |c_k - centre|^4
+  double sum_c6 = 0.0;  // sum_k |c_k - centre|^6
+  Vec3 sum_c;           // sum_k c_k (about the origin, whatever the centre)
 
   /// <c^2>
   [[nodiscard]] double mean_c2() const noexcept { return sum_c2 / static_cast<double>(particles); }
@@ -29,6 +30,6 @@ struct SpeciesMoments {
   }
 };
 
-SpeciesMoments species_moments(const SpeciesStore& store) noexcept;
+SpeciesMoments species_moments(const SpeciesStore& store, const Vec3& centre = {}) noexcept;
 
 }  // namespace granmc

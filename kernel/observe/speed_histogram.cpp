@@ -13,6 +13,11 @@ double scaled_speed_unit(const Scene& scene, double theta_mixture) noexcept {
   return std::sqrt(2.0 * theta_mixture / m_hat);
 }
 
+double histogram_speed_unit(const Scene& scene, const VelocityScale& scale, double theta_mixture) noexcept {
+  if (scene.run.method == Method::event) return 1.0 / scale.u();
+  return scaled_speed_unit(scene, theta_mixture);
+}
+
 void add_speeds(const SpeciesStore& store, double unit, double radius, std::vector<double>& counts) noexcept {
   const double per_shell = static_cast<double>(counts.size()) / (radius * unit);
   store.for_each_velocity([&](const Vec3& c) {

@@ -5,8 +5,10 @@
 #include "kernel/collide/bath_gaussian.hpp"
 #include "kernel/collide/bath_power_law.hpp"
 #include "kernel/collide/hard_sphere.hpp"
+#include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/effects/gaussian_thermostat.hpp"
 #include "kernel/schemes/dsmc_replica.hpp"
+#include "kernel/schemes/event_replica.hpp"
 #include "kernel/schemes/intruder_1d.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 
@@ -19,8 +21,22 @@ namespace {
 constexpr const char* supported_list =
     "supported: method = \"dsmc\" with kernel = \"hard-sphere\", one or two species, any packing_fraction in "
     "[0, 1) (Enskog chi), thermostat kind = \"none\" or \"gaussian\" (a fixed zeta or \"cooling-rate\"), "
-    "shear rate = 0, relaxation disabled; method = \"gillespie\" with an [intruder] of dimension 1 in a "
-    "\"gaussian\" or \"power-law\" bath";
+    "shear rate = 0, relaxation disabled; method = \"event\" with one species, collision.rate > 0 (the "
+    "form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or \"white-noise\", "
+    "packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of dimension 1 in "
+    "a \"gaussian\" or \"power-law\" bath";
+
+/// Why granmc cannot run an event-scheme scene, or empty.
+std::string unsupported_event(const Scene& scene) {
+  if (scene.species.size() != 1) return "the event scheme with other than one [[species]]";
+  if (scene.species[0].mass != 1.0) return "the event scheme with a species mass other than 1 (001 has unit mass)";
+  if (!(scene.collision.rate > 0.0)) return "the event scheme with collision.rate = 0 (the 000 hard-sphere form)";
+  if (scene.thermostat.kind == ThermostatKind::gaussian) return "the event scheme with the Gaussian thermostat";
+  if (scene.collision.packing_fraction > 0.0) return "the event scheme with a packing_fraction (Enskog)";
+  if (scene.shear_rate != 0.0) return "the event scheme with a [shear] rate";
+  if (scene.relaxation) return "the event scheme with the [relaxation] term";
+  return {};
+}
 
 }  // namespace
 
@@ -28,7 +44,7 @@ std::string unsupported_reason(const Scene& scene) {
   std::string what;
   if (scene.run.method == Method::gillespie) {
     if (scene.intruder->dimension != 1) what = "the 2D needle intruder";
-  } else if (scene.run.method != Method::dsmc) what = "run.method = \"event\"";
+  } else if (scene.run.method == Method::event) what = unsupported_event(scene);
   else if (scene.intruder) what = "the DSMC alternative for the intruder";
   else if (scene.collision.kernel != CollisionKernel::hard_sphere) what = "collision.kernel other than \"hard-sphere\"";
   else if (scene.species.empty() || scene.species.size() > 2) what = "a scene without one or two [[species]]";
@@ -42,6 +58,12 @@ std::string unsupported_reason(const Scene& scene) {
 std::string instantiation_name(const Scene& scene) {
   if (scene.run.method == Method::gillespie)
     return scene.intruder->bath == BathKind::gaussian ? "gillespie-1d<gaussian-bath>" : "gillespie-1d<power-law-bath>";
+  if (scene.run.method == Method::event) {
+    const char* kernel = scene.collision.lambda == 0.0 ? MaxwellKernel::name
+                         : scene.collision.lambda == 1.0 ? IsotropicHardSphereKernel::name
+                                                         : VhsKernel::name;
+    return std::string("event<") + kernel + (scene.thermostat.kind == ThermostatKind::white_noise ? ", white-noise>" : ">");
+  }
   std::string name = scene.thermostat.kind == ThermostatKind::gaussian ? "dsmc<hard-sphere, gaussian-thermostat>"
                                                                        : "dsmc<hard-sphere>";
   if (scene.collision.packing_fraction > 0.0) name += ", Enskog chi in the pair rates";
@@ -59,6 +81,16 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
     };
     if (in.bath == BathKind::gaussian) return run(GaussianBath{in.bath_a, in.bath_density});
     return run(PowerLawBath{in.bath_a, in.bath_density});
+  }
+  if (scene.run.method == Method::event) {
+    auto run = [&](auto kernel) {
+      return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+        return run_event_replica(scene, replica, times, options, kernel);
+      });
+    };
+    if (scene.collision.lambda == 0.0) return run(MaxwellKernel{});
+    if (scene.collision.lambda == 1.0) return run(IsotropicHardSphereKernel{});
+    return run(VhsKernel{scene.collision.lambda});
   }
   if (scene.thermostat.kind == ThermostatKind::gaussian) {
     const GaussianThermostat thermostat{scene.thermostat.zeta_is_cooling_rate, scene.thermostat.zeta};

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <cstdio>
+#include <string>
 
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/species_store.hpp"
 #include "kernel/schemes/dispatch.hpp"
 #include "kernel/theory/intruder.hpp"
 #include "kernel/theory/scene_theory.hpp"
+#include "kernel/theory/white_noise.hpp"
 
 namespace granmc {
 
@@ -24,6 +27,33 @@ double expected_max_speed(double particles) {
     (tail > 1.0 / particles ? lo : hi) = x;
   }
   return 0.5 * (lo + hi);
+}
+
+/// The time-step-free scheme (001 sec. 4): candidates at pi_hat = 2 pi rate (n - 1) U_max^lambda, U_max
+/// estimated as 2 x the expected largest speed at the larger of T(0) and the steady temperature.
+RunPlan plan_event(const Scene& scene, RunPlan plan) {
+  const CollisionConfig& c = scene.collision;
+  char kernel[96];
+  std::snprintf(kernel, sizeof kernel, "one species, kernel rate |u|^lambda with lambda = %g, e uniform (001 eqs. 4, 8)",
+                c.lambda);
+  plan.effects.push_back(kernel);
+  if (scene.thermostat.kind == ThermostatKind::white_noise)
+    plan.effects.push_back("white noise by lazy Brownian updates at collision and sample times (001 eq. 23)");
+  else
+    plan.absent.push_back("white noise");
+  plan.effects.push_back(c.lambda == 0.0 ? "every candidate collides (Maxwell kernel: no majorant)"
+                                         : "constant majorant U_max, raised at candidates, reset at samples");
+  const double n = static_cast<double>(scene.species[0].particles);
+  plan.particle_bytes = static_cast<std::uint64_t>(n) * SpeciesStore::bytes_per_particle() * plan.replicas_in_flight;
+  double temperature = scene.initial_temperature;
+  if (scene.thermostat.kind == ThermostatKind::white_noise)
+    temperature = std::max(temperature, theory::white_noise_steady_temperature(c.lambda, c.rate, c.restitution[0][0],
+                                                                               scene.thermostat.beta, 0.0));
+  const double majorant = 2.0 * expected_max_speed(n) * std::sqrt(temperature);
+  plan.candidates = scene.run.replicas * scene.run.t_end * 2.0 * std::numbers::pi * c.rate * (n - 1.0) *
+                    std::pow(majorant, c.lambda);
+  plan.candidates_upper_bound = false;
+  return plan;
 }
 
 }  // namespace
@@ -42,6 +72,7 @@ RunPlan plan_run(const Scene& scene, int threads) {
                   std::sqrt(2.0 * tb * (1.0 + 1.0 / in.mass) / std::numbers::pi);
     return plan;
   }
+  if (scene.run.method == Method::event) return plan_event(scene, plan);
   plan.effects.push_back(scene.species.size() == 1
                              ? "one species"
                              : "two species: 4 ordered pairs, candidates interleaved within each step");

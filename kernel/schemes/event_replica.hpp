@@ -1,0 +1,32 @@
+#pragma once
+// One replica of the time-step-free white-noise scheme (001 sec. 4) from t = 0 to t_end, observed at the
+// sample times.
+#include <cstdint>
+#include <vector>
+
+#include "kernel/observe/gas_observation.hpp"
+#include "kernel/schemes/event_white_noise.hpp"
+#include "kernel/schemes/run_options.hpp"
+
+namespace granmc {
+
+template <class Kernel>
+ReplicaSeries run_event_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
+                                const RunOptions& options, Kernel kernel) {
+  EventWhiteNoise<Kernel> sim(scene, replica, kernel);
+  ReplicaSeries series;
+  series.species.resize(1);
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    sim.advance_to(times[k]);
+    observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
+    series.collisions.push_back(static_cast<double>(sim.tally().collisions));
+    if (options.on_sample) options.on_sample();
+  }
+  series.pair_collisions.push_back(sim.tally().collisions);
+  series.candidates = sim.tally().candidates;
+  series.majorant_updates = sim.tally().majorant_updates;
+  series.majorant_violations = sim.tally().majorant_violations;
+  return series;
+}
+
+}  // namespace granmc

@@ -1,0 +1,32 @@
+#pragma once
+// Theory of the uniformly heated gas of 001 (df/dt - beta Lap_v f = gamma Q_alpha(f), unit mass) with the
+// kernel B = rate |u|^lambda, rate = gamma C_lambda, e uniform on the sphere. Derivations: docs/physics.md.
+
+namespace granmc::theory {
+
+/// Decay rate of T for Maxwell pseudomolecules: kappa = pi rate (1 - alpha^2) (001 eq. 16, gamma C_0 = rate).
+double maxwell_relaxation_rate(double rate, double alpha) noexcept;
+
+/// Exact Maxwell relaxation (001 eqs. 16-17): T(t) = T0 e^{-kappa t} + T_inf (1 - e^{-kappa t}),
+/// T_inf = 2 beta / kappa.
+double maxwell_temperature(double t, double temperature0, double beta, double rate, double alpha) noexcept;
+
+/// The expected bulk-subtracted temperature of the n-particle system of 001 sec. 4 with a Maxwell kernel:
+/// exactly (1 - 1/n) T(t), with T(t) the Boltzmann solution above (docs/physics.md derives it; the
+/// noise feeds the bulk velocity a share 1/n of the heating, and the initial sample loses 1/n to its mean).
+double maxwell_temperature_particles(double t, double temperature0, double beta, double rate, double alpha,
+                                     double particles) noexcept;
+
+/// <|u|^p> over pairs of independent Maxwellian unit-mass particles at temperature T:
+/// (4 T)^{p/2} Gamma((3 + p)/2) / Gamma(3/2).
+double maxwellian_relative_speed_moment(double p, double temperature) noexcept;
+
+/// Steady white-noise temperature from the energy balance 2 beta = (1 - alpha^2)/24 4 pi rate <|u|^{2+lambda}>
+/// (001 eq. 15) with a Maxwellian closure, times the first-Sonine factor (1 + 3 a2 / 16) for hard spheres
+/// (lambda = 1; pass a2 = 0 for the closure alone). Exact for lambda = 0 (2 beta / kappa).
+double white_noise_steady_temperature(double lambda, double rate, double alpha, double beta, double a2) noexcept;
+
+/// High-velocity tail exponent b of f ~ exp(-a |v|^b) (001 eqs. 19-21): b = 1 + lambda / 2.
+double tail_exponent(double lambda) noexcept;
+
+}  // namespace granmc::theory
