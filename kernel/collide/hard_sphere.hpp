@@ -3,11 +3,17 @@
 // sigma-hat collides at the rate omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) |g.sigma|
 // (000 sec. 3, step 2). The evaluator gives the velocity-dependent factor; the pair's constant
 // prefactor 4 pi sigma_ij^2 n_j chi_ij lives in PairCoefficients.
+//
+// A time-stepped kernel evaluator has: lambda (omega scales as |g|^lambda, so a physical rate is u^lambda
+// times the stored-unit one), rate(g.sigma, |g|^2), and bound(U) >= rate for relative speeds up to U.
 namespace granmc {
 
 struct HardSphere {
+  static constexpr double lambda = 1.0;
+  static constexpr const char* name = "hard-sphere";
   /// Rate factor for normal relative speed g_sigma = g.sigma-hat > 0.
-  static constexpr double rate(double g_sigma) noexcept { return g_sigma; }
+  static constexpr double rate(double g_sigma, double /*g2*/) noexcept { return g_sigma; }
+  static constexpr double bound(double relative_speed) noexcept { return relative_speed; }
 };
 
 }  // namespace granmc

@@ -27,7 +27,11 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       PairCoefficients p;
       p.i = i;
       p.j = j;
-      p.rate_prefactor = 4.0 * std::numbers::pi * sigma_ij * sigma_ij * b.density * chi;
+      // 000: 4 pi sigma_ij^2 n_j chi_ij. The kernel form of 001 (collision.rate > 0, one species):
+      // 16 pi rate, whose mean over sigma-hat gives the total rate 4 pi rate |g|^lambda per pair
+      // (collide/maxwell_pseudomolecules.hpp; for hard spheres n sigma^2 = 4 rate).
+      p.rate_prefactor = scene.collision.rate > 0.0 ? 16.0 * std::numbers::pi * scene.collision.rate
+                                                    : 4.0 * std::numbers::pi * sigma_ij * sigma_ij * b.density * chi;
       p.mu_ji = b.mass / (a.mass + b.mass);
       p.mu_ij = a.mass / (a.mass + b.mass);
       p.one_plus_alpha = 1.0 + alpha;

@@ -13,6 +13,7 @@ enum class RngPurpose : std::uint16_t {
   intruder_event = 3,    // sub = 0, step = event, index = 0 (waiting time, side), 1, 2, ... (sampling attempts)
   event_candidate = 5,   // event scheme (001 sec. 4): sub = 0, step = waiting-time draw, index = block 0..3
   brownian_sync = 6,     // event scheme: sub = 0, step = sample index, index = particle (Remark 2 update)
+  white_noise_kick = 7,  // time-stepped white noise: sub = species, step = time step, index = particle
 };
 
 }  // namespace granmc

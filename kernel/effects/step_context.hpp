@@ -14,6 +14,7 @@
 // Dsmc<Kernel, Effects...> runs, in each step, the free_flight effects, the collision stage, then the
 // after_collisions effects, each in the order of the pack. An effect the scene does not name is not in
 // the pack: it costs nothing.
+#include "kernel/core/philox_stream.hpp"
 #include "kernel/schemes/gas_state.hpp"
 
 namespace granmc {
@@ -25,6 +26,7 @@ struct StepContext {
   double twice_energy = 0.0;       // sum_i m_i sum_k |c_k|^2 (stored units) now
   double twice_energy_loss = 0.0;  // lost in this step's collision stage (0 in the free_flight phase):
                                    // before the collisions the stored energy was twice_energy + this
+  const RandomStream* rng = nullptr;  // the replica's stream, for effects that draw (state.step is the step)
 };
 
 }  // namespace granmc

@@ -94,7 +94,7 @@ void collide_step(GasState& state, std::span<const PairCoefficients> pairs, std:
       Vec3 vl = sb.velocity(ls[b]);
       const double g_sigma = dot(vk - vl, sigma);
       if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
-      const double omega = p.rate_prefactor * Kernel::rate(g_sigma);
+      const double omega = p.rate_prefactor * Kernel::rate(g_sigma, norm2(vk - vl));
       if (omega > majorant) {
         majorant = omega;
         ++tally.majorant_updates;

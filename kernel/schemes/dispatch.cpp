@@ -6,7 +6,9 @@
 #include "kernel/collide/bath_power_law.hpp"
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/isotropic_kernels.hpp"
+#include "kernel/collide/maxwell_pseudomolecules.hpp"
 #include "kernel/effects/gaussian_thermostat.hpp"
+#include "kernel/effects/white_noise.hpp"
 #include "kernel/schemes/dsmc_replica.hpp"
 #include "kernel/schemes/event_replica.hpp"
 #include "kernel/schemes/intruder_1d.hpp"
@@ -20,8 +22,9 @@ namespace {
 // species and the Enskog chi need no instantiation of their own: both only change the pair constants.
 constexpr const char* supported_list =
     "supported: method = \"dsmc\" with kernel = \"hard-sphere\", one or two species, any packing_fraction in "
-    "[0, 1) (Enskog chi), thermostat kind = \"none\" or \"gaussian\" (a fixed zeta or \"cooling-rate\"), "
-    "shear rate = 0, relaxation disabled; method = \"event\" with one species, collision.rate > 0 (the "
+    "[0, 1) (Enskog chi), or kernel = \"maxwell\" with collision.rate > 0 and one species; thermostat kind = "
+    "\"none\", \"gaussian\" (a fixed zeta or \"cooling-rate\") or \"white-noise\"; shear rate = 0, "
+    "relaxation disabled; method = \"event\" with one species, collision.rate > 0 (the "
     "form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or \"white-noise\", "
     "packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of dimension 1 in "
     "a \"gaussian\" or \"power-law\" bath";
@@ -38,6 +41,20 @@ std::string unsupported_event(const Scene& scene) {
   return {};
 }
 
+/// The time-stepped scheme with the kernel K and the thermostat the scene names (none is an empty pack).
+template <class K>
+RunResult run_dsmc(const Scene& scene, const RunOptions& options) {
+  auto run = [&](auto... effects) {
+    return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+      return run_dsmc_replica<K>(scene, replica, times, options, effects...);
+    });
+  };
+  const ThermostatConfig& th = scene.thermostat;
+  if (th.kind == ThermostatKind::gaussian) return run(GaussianThermostat{th.zeta_is_cooling_rate, th.zeta});
+  if (th.kind == ThermostatKind::white_noise) return run(WhiteNoise{th.beta, &scene});
+  return run();
+}
+
 }  // namespace
 
 std::string unsupported_reason(const Scene& scene) {
@@ -46,9 +63,10 @@ std::string unsupported_reason(const Scene& scene) {
     if (scene.intruder->dimension != 1) what = "the 2D needle intruder";
   } else if (scene.run.method == Method::event) what = unsupported_event(scene);
   else if (scene.intruder) what = "the DSMC alternative for the intruder";
-  else if (scene.collision.kernel != CollisionKernel::hard_sphere) what = "collision.kernel other than \"hard-sphere\"";
+  else if (scene.collision.kernel == CollisionKernel::vhs) what = "method = \"dsmc\" with kernel = \"vhs\"";
+  else if (scene.collision.kernel == CollisionKernel::maxwell && !(scene.collision.rate > 0.0))
+    what = "method = \"dsmc\" with kernel = \"maxwell\" and collision.rate = 0 (set the rate of 001)";
   else if (scene.species.empty() || scene.species.size() > 2) what = "a scene without one or two [[species]]";
-  else if (scene.thermostat.kind == ThermostatKind::white_noise) what = "the white-noise [thermostat]";
   else if (scene.shear_rate != 0.0) what = "a [shear] rate";
   else if (scene.relaxation) what = "the [relaxation] term";
   if (what.empty()) return {};
@@ -64,8 +82,11 @@ std::string instantiation_name(const Scene& scene) {
                                                          : VhsKernel::name;
     return std::string("event<") + kernel + (scene.thermostat.kind == ThermostatKind::white_noise ? ", white-noise>" : ">");
   }
-  std::string name = scene.thermostat.kind == ThermostatKind::gaussian ? "dsmc<hard-sphere, gaussian-thermostat>"
-                                                                       : "dsmc<hard-sphere>";
+  std::string name = std::string("dsmc<") +
+                     (scene.collision.kernel == CollisionKernel::maxwell ? MaxwellPseudomolecules::name : HardSphere::name);
+  if (scene.thermostat.kind == ThermostatKind::gaussian) name += ", gaussian-thermostat";
+  if (scene.thermostat.kind == ThermostatKind::white_noise) name += ", white-noise";
+  name += ">";
   if (scene.collision.packing_fraction > 0.0) name += ", Enskog chi in the pair rates";
   return name;
 }
@@ -92,15 +113,8 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
     if (scene.collision.lambda == 1.0) return run(IsotropicHardSphereKernel{});
     return run(VhsKernel{scene.collision.lambda});
   }
-  if (scene.thermostat.kind == ThermostatKind::gaussian) {
-    const GaussianThermostat thermostat{scene.thermostat.zeta_is_cooling_rate, scene.thermostat.zeta};
-    return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-      return run_dsmc_replica<HardSphere>(scene, replica, times, options, thermostat);
-    });
-  }
-  return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-    return run_dsmc_replica<HardSphere>(scene, replica, times, options);
-  });
+  if (scene.collision.kernel == CollisionKernel::maxwell) return run_dsmc<MaxwellPseudomolecules>(scene, options);
+  return run_dsmc<HardSphere>(scene, options);
 }
 
 }  // namespace granmc

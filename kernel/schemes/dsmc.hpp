@@ -48,8 +48,9 @@ class Dsmc {
     rescales_ = 0;
     momentum_removed_ = 0.0;
     log_temperature0_ = log_temperature();
-    // Initial majorant: omega_max^(ij) = 4 pi sigma_ij^2 n_j chi_ij (max_k |c_k| + max_l |c_l|), an
-    // exact bound on omega_kl at t = 0; afterwards it grows when exceeded (000 sec. 3).
+    // Initial majorant: omega_max^(ij) = 4 pi sigma_ij^2 n_j chi_ij (max_k |c_k| + max_l |c_l|) for hard
+    // spheres (Kernel::bound), an exact bound on omega_kl at t = 0; afterwards it grows when exceeded
+    // (000 sec. 3).
     std::vector<double> max_speed;
     for (const SpeciesStore& s : state_.species) {
       double m = 0.0;
@@ -57,7 +58,7 @@ class Dsmc {
       max_speed.push_back(std::sqrt(m));
     }
     for (const PairCoefficients& p : pairs_) {
-      omega_max_.push_back(p.rate_prefactor * (max_speed[p.i] + max_speed[p.j]));
+      omega_max_.push_back(p.rate_prefactor * Kernel::bound(max_speed[p.i] + max_speed[p.j]));
       carried_.push_back(0.0);
       pair_totals_.emplace_back();
       step_tallies_.emplace_back();
@@ -93,14 +94,18 @@ class Dsmc {
   }
 
   void step(double dt) {
-    run_phase<StepPhase::free_flight>({dt, twice_energy_, 0.0});
+    run_phase<StepPhase::free_flight>({dt, twice_energy_, 0.0, &rng_});
 
-    const double u_dt = std::exp(state_.scale.log_u + std::log(dt));
+    const double u_dt = std::exp(Kernel::lambda * state_.scale.log_u + std::log(dt));  // u^lambda dt
     for (std::size_t q = 0; q < pairs_.size(); ++q) {
       const PairCoefficients& p = pairs_[q];
       const double n_i = static_cast<double>(state_.species[p.i].size());
       if (p.i == p.j && n_i < 2.0) continue;  // no partner within a species of one particle
-      const double wanted = 0.5 * n_i * omega_max_[q] * u_dt + carried_[q];  // 1/2 N_i omega_max dt
+      // 1/2 N_i omega_max dt candidates (000 sec. 3), with N_i - 1 for a pair within one species: the
+      // partner is drawn among the N_i - 1 others, so each of the N_i (N_i - 1) ordered pairs gets its
+      // exact rate omega / N_i; the paper's N_i over-counts by N_i / (N_i - 1) (docs/physics.md).
+      const double partners = p.i == p.j ? n_i - 1.0 : n_i;
+      const double wanted = 0.5 * partners * omega_max_[q] * u_dt + carried_[q];
       if (!(wanted < static_cast<double>(RandomStream::counter_limit / 8)))
         throw std::runtime_error("time step too large: " + std::to_string(wanted) +
                                  " collision candidates in one step; reduce run.dt");
@@ -116,7 +121,7 @@ class Dsmc {
       add(tally, step_tallies_[q]);
     }
     twice_energy_ -= tally.twice_energy_loss;
-    run_phase<StepPhase::after_collisions>({dt, twice_energy_, tally.twice_energy_loss});
+    run_phase<StepPhase::after_collisions>({dt, twice_energy_, tally.twice_energy_loss, &rng_});
     add(total_, tally);
     ++state_.step;
     if (twice_energy_ < reference_twice_energy_ / rescale_factor ||

@@ -82,6 +82,10 @@ RunPlan plan_run(const Scene& scene, int threads) {
     plan.effects.push_back(scene.thermostat.zeta_is_cooling_rate
                                ? "Gaussian thermostat compensating the cooling rate (O(1) per step)"
                                : "Gaussian thermostat, fixed zeta (O(1) per step)");
+  if (scene.thermostat.kind == ThermostatKind::white_noise)
+    plan.effects.push_back("white noise after each collision stage (splitting, O(N) per step)");
+  if (scene.collision.kernel == CollisionKernel::maxwell)
+    plan.effects.push_back("Maxwell pseudomolecules in the impact-direction form (16 pi rate (g.sigma)/|g|)");
   if (scene.run.dt_scaling == DtScaling::thermal) plan.effects.push_back("time step following the thermal speed");
   if (scene.thermostat.kind == ThermostatKind::none) plan.absent.push_back("thermostat");
   if (scene.shear_rate == 0.0) plan.absent.push_back("shear");
@@ -107,7 +111,10 @@ RunPlan plan_run(const Scene& scene, int threads) {
     const SpeciesConfig& b = scene.species[p.j];
     const double max_a = expected_max_speed(static_cast<double>(a.particles)) / std::sqrt(a.mass);
     const double max_b = expected_max_speed(static_cast<double>(b.particles)) / std::sqrt(b.mass);
-    plan.candidates += 0.5 * static_cast<double>(a.particles) * p.rate_prefactor * (max_a + max_b) * u0 * u_time;
+    if (scene.collision.kernel == CollisionKernel::maxwell)  // omega_max = prefactor, whatever T
+      plan.candidates += 0.5 * static_cast<double>(a.particles) * p.rate_prefactor * scene.run.t_end;
+    else
+      plan.candidates += 0.5 * static_cast<double>(a.particles) * p.rate_prefactor * (max_a + max_b) * u0 * u_time;
   }
   plan.candidates *= scene.run.replicas;
   return plan;

@@ -20,6 +20,13 @@ double maxwell_temperature_particles(double t, double temperature0, double beta,
   return (1.0 - 1.0 / particles) * maxwell_temperature(t, temperature0, beta, rate, alpha);
 }
 
+double maxwell_temperature_splitting(double t, double dt, double temperature0, double beta, double rate, double alpha,
+                                     double particles) noexcept {
+  const double kappa = maxwell_relaxation_rate(rate, alpha);
+  const double steady = beta == 0.0 ? 0.0 : -2.0 * beta * dt / std::expm1(-kappa * dt);
+  return (1.0 - 1.0 / particles) * (steady + (temperature0 - steady) * std::exp(-kappa * t));
+}
+
 double maxwellian_relative_speed_moment(double p, double temperature) noexcept {
   return std::pow(4.0 * temperature, 0.5 * p) * std::tgamma(0.5 * (3.0 + p)) / std::tgamma(1.5);
 }

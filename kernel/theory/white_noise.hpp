@@ -17,6 +17,13 @@ double maxwell_temperature(double t, double temperature0, double beta, double ra
 double maxwell_temperature_particles(double t, double temperature0, double beta, double rate, double alpha,
                                      double particles) noexcept;
 
+/// The same with the time-stepped scheme's first-order splitting (collisions, then the noise of the whole
+/// step, effects/white_noise.hpp), at t = k dt: T_{k+1} = e^{-kappa dt} T_k + 2 beta dt, i.e.
+/// T_k = T_dt + (T0 - T_dt) e^{-kappa t}, T_dt = 2 beta dt / (1 - e^{-kappa dt}); times (1 - 1/n) for n
+/// particles. The steady state is too hot by T_dt / T_inf - 1 = kappa dt / 2 + O(dt^2) (docs/physics.md).
+double maxwell_temperature_splitting(double t, double dt, double temperature0, double beta, double rate, double alpha,
+                                     double particles) noexcept;
+
 /// <|u|^p> over pairs of independent Maxwellian unit-mass particles at temperature T:
 /// (4 T)^{p/2} Gamma((3 + p)/2) / Gamma(3/2).
 double maxwellian_relative_speed_moment(double p, double temperature) noexcept;

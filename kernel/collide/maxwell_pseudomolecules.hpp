@@ -1,0 +1,20 @@
+#pragma once
+// Maxwell pseudomolecules (001 eq. 7) in the impact-direction form of the time-stepped scheme: a pair
+// with direction sigma-hat collides at omega_kl = prefactor Theta(g.sigma) (g.sigma) / |g|. The post-
+// collision rule of 000 eqs. (14-15) with sigma-hat drawn with this weight is the rule of 001 eq. (4) with
+// e uniform (the elastic scattering direction e = g' / |g| is uniform when the weight is (g.sigma)/|g|),
+// and the mean of omega over sigma-hat is prefactor / 4, independent of |g|: with prefactor = 16 pi rate
+// (PairCoefficients for collision.rate > 0) the total rate per pair is 4 pi rate, the kernel B = rate.
+// docs/physics.md derives both.
+#include <cmath>
+
+namespace granmc {
+
+struct MaxwellPseudomolecules {
+  static constexpr double lambda = 0.0;
+  static constexpr const char* name = "maxwell";
+  static double rate(double g_sigma, double g2) noexcept { return g_sigma / std::sqrt(g2); }
+  static constexpr double bound(double /*relative_speed*/) noexcept { return 1.0; }
+};
+
+}  // namespace granmc
