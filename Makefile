@@ -6,7 +6,8 @@ PYTHON ?= /usr/bin/python3
 JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
-.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000 fig-002-3 fig-002-4 fig-002-5 figures-002
+.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000 fig-002-3 fig-002-4 fig-002-5 figures-002 \
+	table-001-1 table-001-2 fig-001-3 relaxation-001
 
 all: build
 
@@ -52,6 +53,19 @@ fig-002-3 fig-002-4 fig-002-5: fig-002-%: build
 	@if [ $* = 5 ]; then $(PYTHON) drivers/plot_intruder_tails.py results/002_fig5; fi
 
 figures-002: fig-002-3 fig-002-4 fig-002-5
+
+# Paper 001 sec. 5.2: temperature relaxation against n (drivers/relaxation.py; results/001_example<k>/).
+RELAXATION = $(PYTHON) drivers/relaxation.py --granmc $(GRANMC)
+table-001-1: build
+	$(RELAXATION) drivers/scenes/001_relaxation/example3.toml --particles 64 256 1024 4096 16384 \
+	  --plot-particles 64 256 1024 4096 --window 2 8 --paper-table 1
+table-001-2: build
+	$(RELAXATION) drivers/scenes/001_relaxation/example4.toml --particles 64 256 1024 4096 16384 \
+	  --plot-particles 64 256 1024 4096 --window 2 8 --paper-table 2
+fig-001-3: build
+	$(RELAXATION) drivers/scenes/001_relaxation/example5.toml --particles 64 256 1024 4096
+
+relaxation-001: table-001-1 table-001-2 fig-001-3
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure
