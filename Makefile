@@ -6,7 +6,7 @@ PYTHON ?= /usr/bin/python3
 JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
-.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000 fig-002-3 fig-002-4 fig-002-5 figures-002 \
+.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001
 
 all: build
@@ -52,7 +52,16 @@ fig-002-3 fig-002-4 fig-002-5: fig-002-%: build
 	$(PYTHON) drivers/figure.py drivers/scenes/002_fig$*/figure.toml --granmc $(GRANMC)
 	@if [ $* = 5 ]; then $(PYTHON) drivers/plot_intruder_tails.py results/002_fig5; fi
 
-figures-002: fig-002-3 fig-002-4 fig-002-5
+# The 2D needle: Fig. 7 (R against alpha) and Fig. 8 (angular-velocity distribution).
+fig-002-7: build
+	$(PYTHON) drivers/figure.py drivers/scenes/002_fig7/figure.toml --granmc $(GRANMC)
+
+fig-002-8: build
+	@mkdir -p results/002_fig8
+	$(GRANMC) run drivers/scenes/002_fig8/needle.toml --out results/002_fig8/needle.h5 --summary results/002_fig8/needle.json
+	$(PYTHON) drivers/plot_needle_angular.py results/002_fig8/needle.h5 results/002_fig8
+
+figures-002: fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8
 
 # Paper 001 sec. 5.2: temperature relaxation against n (drivers/relaxation.py; results/001_example<k>/).
 RELAXATION = $(PYTHON) drivers/relaxation.py --granmc $(GRANMC)

@@ -15,7 +15,7 @@ Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.pack
 Plotted quantities (y): "temperature_ratio" (gamma = T_1/T_2), "temperature_ratio_relative"
 (gamma(x)/gamma(x = 0) of the same curve, 000 Fig. 5), "cumulants" (c_i = 2 a2_i per species, 000 Fig. 1),
 "intruder_temperature_ratio" (T/T_B of a Gillespie intruder, 002 Figs. 3-4; "alpha" then sets
-intruder.restitution).
+intruder.restitution), "needle_correlation" (R of the 2D needle, 002 eq. 34 and Fig. 7).
 """
 import argparse
 import copy
@@ -121,6 +121,9 @@ def simulated(summary, y):
     if y == "intruder_temperature_ratio":
         r = summary["intruder"]["temperature_ratio"]
         return [("", r["mean"], r["ci"])]
+    if y == "needle_correlation":
+        r = summary["intruder"]["R"]
+        return [("", r["mean"], r["ci"])]
     if y == "cumulants":
         species = summary["species"]
         return [(f", species {sp['name']}" if len(species) > 1 else "", 2.0 * sp["a2_last_half"]["mean"],
@@ -142,6 +145,8 @@ def theoretical(th, y):
             out["exact"] = [i["temperature_ratio_exact"]]
         if i.get("bath") == "power-law":  # the Gaussian-bath result as the reference line (002 Fig. 4)
             out["Gaussian bath, eq. 22"] = [i["temperature_ratio_gaussian_bath"]]
+    elif y == "needle_correlation":
+        out["equilibrium, R = 1"] = [1.0]
     elif y == "cumulants":
         m = th.get("mixture")
         if m:
@@ -252,7 +257,7 @@ def plot(fig, results, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    styles = {"Maxwellian": ":", "first Sonine": "-", "second Sonine": "--", "exact": "-",
+    styles = {"equilibrium, R = 1": ":", "Maxwellian": ":", "first Sonine": "-", "second Sonine": "--", "exact": "-",
               "Gaussian bath, eq. 22": "--"}
     markers = ["o", "s", "^", "D", "v"]
     f, ax = plt.subplots(figsize=(6.4, 4.8))

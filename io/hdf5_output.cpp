@@ -219,7 +219,9 @@ void write_series(Writer& w, const std::string& path, const MeanCISeries& stats,
 void write_intruder(Writer& w, const RunResult& result, const IntruderReport& in) {
   const std::size_t replicas = result.replicas.size();
   w.group("/intruder", "Gillespie intruder (002): attributes temperature_ratio_mean, temperature_ratio_ci (T/T_B, "
-                       "T = M v1^2, over the last half of the samples), bath_temperature, events, and "
+                       "T = M <v1^2> per degree of freedom, over the last half of the samples; the needle's "
+                       "translational temperature; for the needle also R_*, rotational_temperature_ratio_*, "
+                       "newton_iterations, bisection_fallbacks), bath_temperature, events, and "
                        "temperature_ratio_exact where it is known (002 eq. 22; power law with M = alpha)");
   w.attribute("/intruder", "temperature_ratio_mean", in.temperature_ratio.mean);
   w.attribute("/intruder", "temperature_ratio_ci", in.temperature_ratio.ci);
@@ -238,6 +240,27 @@ void write_intruder(Writer& w, const RunResult& result, const IntruderReport& in
             replica_rows(result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->speed_counts; }),
             {replicas, in.speed_distribution.mean.size()},
             "samples of |v1| counted in each shell (columns), per replica (rows)");
+  if (in.needle) {
+    const NeedleReport& n = *in.needle;
+    w.attribute("/intruder", "R_mean", n.correlation.mean);
+    w.attribute("/intruder", "R_ci", n.correlation.ci);
+    w.attribute("/intruder", "rotational_temperature_ratio_mean", n.rotational_temperature_ratio.mean);
+    w.attribute("/intruder", "rotational_temperature_ratio_ci", n.rotational_temperature_ratio.ci);
+    w.attribute("/intruder", "newton_iterations", static_cast<std::int64_t>(n.newton_iterations));
+    w.attribute("/intruder", "bisection_fallbacks", static_cast<std::int64_t>(n.bisection_fallbacks));
+    w.doubles("/intruder/velocity_y",
+              replica_rows(result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->velocity_y; }),
+              {replicas, result.times.size()}, "needle: v1_y of each replica (rows) at each sample (columns); "
+                                               "/intruder/velocity holds v1_x");
+    w.doubles("/intruder/angular_velocity",
+              replica_rows(result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->angular_velocity; }),
+              {replicas, result.times.size()}, "needle: angular velocity omega (1/time) of each replica at each sample");
+    w.doubles("/intruder/angular_shell_edges", n.angular_shell_edges, "edges of the |omega| shells (1/time)");
+    w.doubles("/intruder/angular_distribution_mean", n.angular_distribution.mean,
+              "replica mean of the density of |omega| per unit angular speed over the last half of the samples");
+    w.doubles("/intruder/angular_distribution_ci", n.angular_distribution.ci,
+              "confidence half-width of that mean, lambda_p = 3.2 (001 eq. 31)");
+  }
 }
 
 void write_contents(hid_t file, const Scene& scene, const RunResult& result, const RunReport& report) {

@@ -56,6 +56,15 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
                      {"speed_shell_edges", numbers(in.speed_shell_edges)},
                      {"speed_distribution", mean_ci(in.speed_distribution)}};
     if (in.temperature_ratio_exact) j["intruder"]["temperature_ratio_exact"] = number(*in.temperature_ratio_exact);
+    if (in.needle) {
+      const NeedleReport& n = *in.needle;
+      j["intruder"]["R"] = mean_ci(n.correlation);
+      j["intruder"]["rotational_temperature_ratio"] = mean_ci(n.rotational_temperature_ratio);
+      j["intruder"]["angular_shell_edges"] = numbers(n.angular_shell_edges);
+      j["intruder"]["angular_distribution"] = mean_ci(n.angular_distribution);
+      j["intruder"]["newton_iterations"] = n.newton_iterations;
+      j["intruder"]["bisection_fallbacks"] = n.bisection_fallbacks;
+    }
   }
   nlohmann::json species = nlohmann::json::array();
   for (const SpeciesReport& sp : report.species)

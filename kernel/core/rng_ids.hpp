@@ -11,6 +11,8 @@ enum class RngPurpose : std::uint16_t {
   initial_velocity = 1,  // sub = species, step = 0, index = particle
   collision_pair = 2,    // sub = 0, step = time step, index = 2 s and 2 s + 1 for candidate s of the step
   intruder_event = 3,    // sub = 0, step = event, index = 0 (waiting time, side), 1, 2, ... (sampling attempts)
+  needle_event = 4,      // step = event; sub = 0: index 0 (event time, side); sub = 1: index = attempt at the impact
+                         // point; sub = 2: index = attempt at the bath velocity; sub = 3: step = 0, index 0 (start)
   event_candidate = 5,   // event scheme (001 sec. 4): sub = 0, step = waiting-time draw, index = block 0..3
   brownian_sync = 6,     // event scheme: sub = 0, step = sample index, index = particle (Remark 2 update)
   white_noise_kick = 7,  // time-stepped white noise: sub = species, step = time step, index = particle

@@ -99,6 +99,11 @@ struct Scene {
   std::string source_text;             // the file's text, stored with the results
 };
 
+/// The needle's moment of inertia: the scene's, or M L^2 / 12 (a uniform rod) when it is 0.
+inline double needle_inertia(const IntruderConfig& in) noexcept {
+  return in.inertia > 0.0 ? in.inertia : in.mass * in.length * in.length / 12.0;
+}
+
 /// Total simulated particles over all species.
 inline std::int64_t total_particles(const Scene& s) {
   std::int64_t n = 0;

@@ -29,6 +29,13 @@ struct IntruderSeries {
   std::vector<double> speed_counts;       // histogram of |v1| over the stationary samples (output.histogram,
                                           // radius in velocity units)
   std::uint64_t sampling_attempts = 0;    // rejection attempts for the colliding bath velocities
+  // The needle (002 sec. 3.2) also counts its impact-point attempts in sampling_attempts.
+  std::vector<double> velocity_y;         // needle: v1_y at each sample time (velocity holds v1_x)
+  std::vector<double> angular_velocity;   // needle: omega at each sample time
+  std::vector<double> angular_counts;     // needle: histogram of |omega| over the stationary samples
+                                          // (output.histogram shells, radius in 1/time units)
+  std::uint64_t newton_iterations = 0;    // needle: Newton steps for the event times (002 eq. 28)
+  std::uint64_t bisection_fallbacks = 0;  // needle: bisection steps taken instead of a Newton step
 };
 
 struct ReplicaSeries {

@@ -12,6 +12,7 @@
 #include "kernel/schemes/dsmc_replica.hpp"
 #include "kernel/schemes/event_replica.hpp"
 #include "kernel/schemes/intruder_1d.hpp"
+#include "kernel/schemes/intruder_needle.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 
 namespace granmc {
@@ -27,7 +28,7 @@ constexpr const char* supported_list =
     "relaxation disabled; method = \"event\" with one species, collision.rate > 0 (the "
     "form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or \"white-noise\", "
     "packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of dimension 1 in "
-    "a \"gaussian\" or \"power-law\" bath";
+    "a \"gaussian\" or \"power-law\" bath, or of dimension 2 (the needle) in a \"gaussian\" bath";
 
 /// Why granmc cannot run an event-scheme scene, or empty.
 std::string unsupported_event(const Scene& scene) {
@@ -60,7 +61,8 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options) {
 std::string unsupported_reason(const Scene& scene) {
   std::string what;
   if (scene.run.method == Method::gillespie) {
-    if (scene.intruder->dimension != 1) what = "the 2D needle intruder";
+    if (scene.intruder->dimension == 2 && scene.intruder->bath != BathKind::gaussian)
+      what = "the 2D needle in a \"power-law\" bath";
   } else if (scene.run.method == Method::event) what = unsupported_event(scene);
   else if (scene.intruder) what = "the DSMC alternative for the intruder";
   else if (scene.collision.kernel == CollisionKernel::vhs) what = "method = \"dsmc\" with kernel = \"vhs\"";
@@ -74,6 +76,7 @@ std::string unsupported_reason(const Scene& scene) {
 }
 
 std::string instantiation_name(const Scene& scene) {
+  if (scene.run.method == Method::gillespie && scene.intruder->dimension == 2) return "gillespie-needle<gaussian-bath>";
   if (scene.run.method == Method::gillespie)
     return scene.intruder->bath == BathKind::gaussian ? "gillespie-1d<gaussian-bath>" : "gillespie-1d<power-law-bath>";
   if (scene.run.method == Method::event) {
@@ -95,6 +98,10 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
   if (const std::string why = unsupported_reason(scene); !why.empty()) throw std::invalid_argument(why);
   if (scene.run.method == Method::gillespie) {
     const IntruderConfig& in = *scene.intruder;
+    if (in.dimension == 2)
+      return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+        return run_intruder_needle(scene, replica, times, options);
+      });
     auto run = [&](const auto& bath) {
       return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
         return run_intruder_1d(scene, replica, times, options, bath);

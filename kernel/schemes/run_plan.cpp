@@ -66,9 +66,13 @@ RunPlan plan_run(const Scene& scene, int threads) {
     const IntruderConfig& in = *scene.intruder;
     plan.effects.push_back(in.bath == BathKind::gaussian ? "Gaussian bath (002 eq. 18)" : "power-law bath (002 eq. 23)");
     plan.effects.push_back("colliding bath velocities sampled exactly (no window)");
-    // Mean collision rate rho <|v1 - v|> with both Maxwellian at T_B: rho sqrt(2 T_B (1 + 1/M) / pi).
+    if (in.dimension == 2)
+      plan.effects.push_back("needle of length L: event times from the integrated flux by Newton with a bisection "
+                             "fallback (002 eqs. 27-28), impact point sampled exactly (002 eq. 29)");
+    // Mean collision rate rho <|v1 - v|> with both Maxwellian at T_B: rho sqrt(2 T_B (1 + 1/M) / pi), times
+    // the length for the needle (per unit length, ignoring the rotation: an estimate).
     const double tb = theory::bath_temperature(in);
-    plan.events = scene.run.replicas * scene.run.t_end * in.bath_density *
+    plan.events = scene.run.replicas * scene.run.t_end * in.bath_density * (in.dimension == 2 ? in.length : 1.0) *
                   std::sqrt(2.0 * tb * (1.0 + 1.0 / in.mass) / std::numbers::pi);
     return plan;
   }
