@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
 .PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
-	table-001-1 table-001-2 fig-001-3 relaxation-001
+	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full
 
 all: build
 
@@ -75,6 +75,18 @@ fig-001-3: build
 	$(RELAXATION) drivers/scenes/001_relaxation/example5.toml --particles 64 256 1024 4096
 
 relaxation-001: table-001-1 table-001-2 fig-001-3
+
+# Paper 001 sec. 5.3: tail exponents (drivers/tails.py, drivers/tail_fit.py). tails-001 runs Examples 7-9 at
+# n = 10^6, N = 10 (minutes); tails-001-full at the paper's n = 10^7, N = 100 (hours on 2 cores for now).
+TAILS = $(PYTHON) drivers/tails.py --granmc $(GRANMC)
+tails-001: build
+	$(TAILS) drivers/scenes/001_tails/example7.toml --particles 1000000 --replicas 10
+	$(TAILS) drivers/scenes/001_tails/example8.toml --particles 1000000 --replicas 10
+	$(TAILS) drivers/scenes/001_tails/example9.toml --particles 1000000 --replicas 10
+tails-001-full: build
+	$(TAILS) drivers/scenes/001_tails/example7.toml
+	$(TAILS) drivers/scenes/001_tails/example8.toml
+	$(TAILS) drivers/scenes/001_tails/example9.toml
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure

@@ -26,7 +26,7 @@ def main():
         mean = h["/intruder/angular_distribution_mean"][()]
         ci = h["/intruder/angular_distribution_ci"][()]
         omega = h["/intruder/angular_velocity"][()]  # [replicas, samples]
-    first = (omega.shape[1] - 1) // 2  # the last half, as the summary (first_stationary_sample)
+    first = omega.shape[1] // 2  # the last half, as the summary (first_stationary_sample)
     w = omega[:, first:]
     m2 = (w ** 2).mean(axis=1)
     kurt = (w ** 4).mean(axis=1) / m2 ** 2

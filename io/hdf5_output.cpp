@@ -321,8 +321,11 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
     w.attribute(path, "a3_last_half_ci", sp.a3_last_half.ci);
     if (!sp.speed_distribution.mean.empty()) {
       const std::string d = path + "/speed_distribution";
-      w.group(d, "distribution Phi_i(v*) of the scaled speed v* = |V|/v0 (000 eqs. 7, 19) over the last half of "
-                 "the samples, per shell of /speed_shell_edges; normalised per d^3 v*");
+      w.group(d, scene.run.method == Method::event
+                     ? "distribution of the speed |V| (velocity units, 001 eq. 37) over the last half of the samples, "
+                       "per shell of /speed_shell_edges; normalised per d^3 V"
+                     : "distribution Phi_i(v*) of the scaled speed v* = |V|/v0 (000 eqs. 7, 19) over the last half of "
+                       "the samples, per shell of /speed_shell_edges; normalised per d^3 v*");
       w.doubles(d + "/mean", sp.speed_distribution.mean, "replica mean of Phi_i(v*) in each shell (per d^3 v*)");
       w.doubles(d + "/ci", sp.speed_distribution.ci,
                 "confidence half-width of the replica mean, lambda_p = 3.2 (001 eq. 31) (per d^3 v*)");

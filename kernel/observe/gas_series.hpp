@@ -10,9 +10,11 @@
 
 namespace granmc {
 
-/// The samples k >= (S - 1) / 2 of S sample times: the last half of a run, where heated and scaled
-/// cooling states are stationary. Time averages and speed histograms are taken over them.
-constexpr std::size_t first_stationary_sample(std::size_t sample_times) noexcept { return (sample_times - 1) / 2; }
+/// The samples k >= S / 2 (integer division) of S sample times t_0 .. t_{S-1}: the times in the last half
+/// of a run, t_k >= t_end / 2 for linear spacing, where heated and scaled cooling states are stationary.
+/// Time averages and speed histograms are taken over them; with samples = 1 (S = 2), the final state only
+/// (as 001 sec. 5.3 takes its histograms).
+constexpr std::size_t first_stationary_sample(std::size_t sample_times) noexcept { return sample_times / 2; }
 
 struct SpeciesSeries {
   std::vector<double> temperature;      // T_i = m_i <V^2> / 3 (energy units)
