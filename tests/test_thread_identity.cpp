@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <string>
 
 #include "kernel/schemes/dispatch.hpp"
 
@@ -27,10 +28,38 @@ bool bit_identical(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
+/// The time-step-free white-noise scheme (hard spheres, with the majorant) and the time-stepped one with
+/// white noise.
+Scene small_heated_scene(Method method) {
+  Scene s = small_cooling_scene();
+  s.run.method = method;
+  s.collision.rate = 0.3;
+  s.thermostat.kind = ThermostatKind::white_noise;
+  s.thermostat.beta = 0.5;
+  return s;
+}
+
 }  // namespace
 
-TEST(ThreadIdentity, OneAndTwoThreadsGiveTheSameBits) {
-  const Scene scene = small_cooling_scene();
+class ThreadIdentity : public ::testing::TestWithParam<int> {};
+
+INSTANTIATE_TEST_SUITE_P(Schemes, ThreadIdentity, ::testing::Values(0, 1, 2),
+                         [](const auto& info) {
+                           return std::string(info.param == 0 ? "Cooling" : info.param == 1 ? "EventWhiteNoise" : "DsmcWhiteNoise");
+                         });
+
+namespace {
+
+Scene scene_for(int which) {
+  if (which == 1) return small_heated_scene(Method::event);
+  if (which == 2) return small_heated_scene(Method::dsmc);
+  return small_cooling_scene();
+}
+
+}  // namespace
+
+TEST_P(ThreadIdentity, OneAndTwoThreadsGiveTheSameBits) {
+  const Scene scene = scene_for(GetParam());
   RunOptions one, two;
   one.threads = 1;
   two.threads = 2;
@@ -50,7 +79,7 @@ TEST(ThreadIdentity, OneAndTwoThreadsGiveTheSameBits) {
   EXPECT_NE(a.replicas[0].temperature.back(), a.replicas[1].temperature.back());
 }
 
-TEST(ThreadIdentity, SeedChangesTheRealisation) {
+TEST(SeedIdentity, SeedChangesTheRealisation) {
   Scene scene = small_cooling_scene();
   const RunResult a = run_scene(scene, {});
   scene.run.seed = 12346;

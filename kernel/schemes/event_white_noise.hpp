@@ -75,12 +75,17 @@ class EventWhiteNoise {
   /// Processes every candidate before t, then brings all particles to t (001 Remark 2 and step 3).
   void advance_to(double t) {
     SpeciesStore& store = state_.species[0];
+    // The pair of draw d depends only on the counter d, so the pairs of the next `lookahead` draws are
+    // computed ahead and their records prefetched: the candidates still act one after the other, in order,
+    // and the result is the same as without the look-ahead; only the memory loads overlap.
+    for (std::uint64_t d = draws_; d < draws_ + lookahead; ++d) prepare(d);
     for (;;) {
-      const RandomBlock b0 = rng_.block(RngPurpose::event_candidate, 0, draws_, 0);
-      const double next = state_.time - std::log(uniform_open(b0[0])) / candidate_rate();  // 001 step 2.1
+      const Draw& draw = ahead_[draws_ % lookahead];
+      const double next = state_.time - std::log(uniform_open(draw.b0[0])) / candidate_rate();  // 001 step 2.1
       if (!(next < t)) break;  // memoryless: the draw is discarded and the process restarts at t
       state_.time = next;
-      candidate(store, b0);
+      candidate(store, draw);
+      prepare(draws_ + lookahead);  // reuses this draw's slot
       ++draws_;
     }
     ++draws_;
@@ -88,7 +93,7 @@ class EventWhiteNoise {
     state_.time = t;
     if (noise_ != 0.0)
       for (std::size_t k = 0; k < particles_; ++k)
-        brownian_update(store, k, t, rng_.block(RngPurpose::brownian_sync, 0, syncs_, k));
+        brownian_update(store, k, t, normal_vector(rng_.block(RngPurpose::brownian_sync, 0, syncs_, k)));
     ++syncs_;
     reset_majorant();
   }
@@ -99,28 +104,55 @@ class EventWhiteNoise {
     else return rate_prefactor_ * std::pow(majorant_, kernel_.lambda());
   }
 
-  /// 001 eq. (23) for particle k up to time t, the three normals from the words z: v += sqrt(2 beta s) xi.
-  void brownian_update(SpeciesStore& store, std::size_t k, double t, const RandomBlock& z) const noexcept {
+  /// Draw d: block 0 gives the waiting time, i and the acceptance uniform, block 1 gives j and e.
+  struct Draw {
+    RandomBlock b0, b1;
+    std::size_t i = 0, j = 0;
+  };
+  static constexpr std::uint64_t lookahead = 16;
+
+  void prepare(std::uint64_t d) noexcept {
+    Draw& draw = ahead_[d % lookahead];
+    draw.b0 = rng_.block(RngPurpose::event_candidate, 0, d, 0);
+    draw.b1 = rng_.block(RngPurpose::event_candidate, 0, d, 1);
+    draw.i = uniform_index(draw.b0[1], draw.b0[2], particles_);              // step 2.3
+    const std::size_t j = uniform_index(draw.b1[0], draw.b1[1], particles_ - 1);
+    draw.j = j + (j >= draw.i ? 1 : 0);                                      // step 2.4: uniform on j != i
+    state_.species[0].prefetch(draw.i);
+    state_.species[0].prefetch(draw.j);
+  }
+
+  /// 001 eq. (23) for particle k up to time t with the standard normal vector xi: v += sqrt(2 beta s) xi.
+  void brownian_update(SpeciesStore& store, std::size_t k, double t, const Vec3& xi) const noexcept {
     const double s = t - store.last_update(k);
     store.set_last_update(k, t);
-    if (s <= 0.0) return;
+    if (s > 0.0) store.set_velocity(k, store.velocity(k) + std::sqrt(noise_ * s) * xi);
+  }
+
+  /// Three standard normals from the four words of a block (two Box-Muller pairs, one value unused).
+  static Vec3 normal_vector(const RandomBlock& z) noexcept {
     double x, y, w, unused;
     standard_normal_pair(uniform_open(z[0]), uniform_open(z[1]), x, y);
     standard_normal_pair(uniform_open(z[2]), uniform_open(z[3]), w, unused);
-    store.set_velocity(k, store.velocity(k) + std::sqrt(noise_ * s) * Vec3{x, y, w});
+    return {x, y, w};
   }
 
-  /// One candidate at state_.time: 001 steps 2.3-2.10. Blocks 1-3 of the draw give j, e and the normals.
-  void candidate(SpeciesStore& store, const RandomBlock& b0) {
-    const std::uint64_t n = particles_;
-    const std::size_t i = uniform_index(b0[1], b0[2], n);                     // step 2.3
-    const RandomBlock b1 = rng_.block(RngPurpose::event_candidate, 0, draws_, 1);
-    std::size_t j = uniform_index(b1[0], b1[1], n - 1);                     // step 2.4: uniform on j != i
-    j += j >= i ? 1 : 0;
+  /// One candidate at state_.time: 001 steps 2.5-2.10. Blocks 2-3 of the draw give the six normals of the
+  /// two Brownian increments (three Box-Muller pairs).
+  void candidate(SpeciesStore& store, const Draw& draw) {
+    const std::size_t i = draw.i, j = draw.j;
+    const RandomBlock& b0 = draw.b0;
+    const RandomBlock& b1 = draw.b1;
     const double t = state_.time;
     if (noise_ != 0.0) {  // steps 2.5-2.6
-      brownian_update(store, i, t, rng_.block(RngPurpose::event_candidate, 0, draws_, 2));
-      brownian_update(store, j, t, rng_.block(RngPurpose::event_candidate, 0, draws_, 3));
+      const RandomBlock z0 = rng_.block(RngPurpose::event_candidate, 0, draws_, 2);
+      const RandomBlock z1 = rng_.block(RngPurpose::event_candidate, 0, draws_, 3);
+      double n[6];
+      standard_normal_pair(uniform_open(z0[0]), uniform_open(z0[1]), n[0], n[1]);
+      standard_normal_pair(uniform_open(z0[2]), uniform_open(z0[3]), n[2], n[3]);
+      standard_normal_pair(uniform_open(z1[0]), uniform_open(z1[1]), n[4], n[5]);
+      brownian_update(store, i, t, {n[0], n[1], n[2]});
+      brownian_update(store, j, t, {n[3], n[4], n[5]});
     }
     ++tally_.candidates;
     Vec3 vi = store.velocity(i), vj = store.velocity(j);
@@ -169,6 +201,7 @@ class EventWhiteNoise {
   Vec3 reference_;               // V of the majorant, stored units
   std::uint64_t draws_ = 0;      // waiting-time draws so far (the random counter)
   std::uint64_t syncs_ = 0;      // sample-time updates so far
+  Draw ahead_[lookahead];        // the next draws' random blocks and pairs
   EventTally tally_;
 };
 
