@@ -102,3 +102,29 @@ TEST(Intruder, OneAndTwoThreadsGiveTheSameBits) {
     EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)), 0);
   }
 }
+
+TEST(Intruder, HardCasesStayFiniteAndExact) {
+  // alpha = 0 and mass ratios 10^-3 and 10^3 in the Gaussian bath: eq. (22) still holds, and nothing
+  // under- or overflows. The heavy intruder relaxes over about M / (1 + alpha) collisions, so its run is
+  // longer (about 200 relaxation times per replica).
+  for (double mass : {1e-3, 1e3}) {
+    for (double alpha : {0.0, 0.5}) {
+      const Scene s = intruder_scene(BathKind::gaussian, mass, alpha, mass > 1.0 ? 200000.0 : 20000.0);
+      const RunResult r = run_scene(s, {});
+      const double tb = theory::bath_temperature(*s.intruder);
+      const MeanCI t = velocity_average(r, [&](double v) { return mass * v * v / tb; });
+      const double exact = *theory::intruder_temperature_ratio(*s.intruder);
+      std::printf("[ measured ] M = %g alpha = %.1f: T/T_B = %.5g +- %.2g, exact %.5g\n", mass, alpha, t.mean, t.ci,
+                  exact);
+      EXPECT_TRUE(std::isfinite(t.mean) && std::isfinite(t.ci));
+      EXPECT_NEAR(t.mean, exact, t.ci) << "M = " << mass << ", alpha = " << alpha;
+      for (const ReplicaSeries& rep : r.replicas)
+        for (double v : rep.intruder->velocity) ASSERT_TRUE(std::isfinite(v));
+    }
+  }
+  // The power-law bath's heavy tail with a perfectly inelastic intruder: finite throughout.
+  const Scene s = intruder_scene(BathKind::power_law, 1.0, 0.0, 20000.0);
+  const RunResult r = run_scene(s, {});
+  for (const ReplicaSeries& rep : r.replicas)
+    for (double v : rep.intruder->velocity) ASSERT_TRUE(std::isfinite(v));
+}
