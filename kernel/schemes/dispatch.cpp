@@ -12,6 +12,7 @@
 #include "kernel/schemes/dsmc_replica.hpp"
 #include "kernel/schemes/event_replica.hpp"
 #include "kernel/schemes/intruder_1d.hpp"
+#include "kernel/schemes/intruder_dsmc_1d.hpp"
 #include "kernel/schemes/intruder_needle.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 
@@ -28,7 +29,8 @@ constexpr const char* supported_list =
     "relaxation disabled; method = \"event\" with one species, collision.rate > 0 (the "
     "form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or \"white-noise\", "
     "packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of dimension 1 in "
-    "a \"gaussian\" or \"power-law\" bath, or of dimension 2 (the needle) in a \"gaussian\" bath";
+    "a \"gaussian\" or \"power-law\" bath, or of dimension 2 (the needle) in a \"gaussian\" bath; method = "
+    "\"dsmc\" with an [intruder] of dimension 1 (002 sec. 4)";
 
 /// Why granmc cannot run an event-scheme scene, or empty.
 std::string unsupported_event(const Scene& scene) {
@@ -64,7 +66,10 @@ std::string unsupported_reason(const Scene& scene) {
     if (scene.intruder->dimension == 2 && scene.intruder->bath != BathKind::gaussian)
       what = "the 2D needle in a \"power-law\" bath";
   } else if (scene.run.method == Method::event) what = unsupported_event(scene);
-  else if (scene.intruder) what = "the DSMC alternative for the intruder";
+  else if (scene.intruder && scene.intruder->dimension != 1) what = "the DSMC alternative for the 2D needle";
+  else if (scene.intruder && !(scene.run.t_end / scene.run.dt < static_cast<double>(RandomStream::counter_limit)))
+    what = "an intruder DSMC run with more than 2^48 time steps (raise run.dt)";
+  else if (scene.intruder) what = {};
   else if (scene.collision.kernel == CollisionKernel::vhs) what = "method = \"dsmc\" with kernel = \"vhs\"";
   else if (scene.collision.kernel == CollisionKernel::maxwell && !(scene.collision.rate > 0.0))
     what = "method = \"dsmc\" with kernel = \"maxwell\" and collision.rate = 0 (set the rate of 001)";
@@ -77,6 +82,8 @@ std::string unsupported_reason(const Scene& scene) {
 
 std::string instantiation_name(const Scene& scene) {
   if (scene.run.method == Method::gillespie && scene.intruder->dimension == 2) return "gillespie-needle<gaussian-bath>";
+  if (scene.run.method == Method::dsmc && scene.intruder)
+    return scene.intruder->bath == BathKind::gaussian ? "dsmc-intruder-1d<gaussian-bath>" : "dsmc-intruder-1d<power-law-bath>";
   if (scene.run.method == Method::gillespie)
     return scene.intruder->bath == BathKind::gaussian ? "gillespie-1d<gaussian-bath>" : "gillespie-1d<power-law-bath>";
   if (scene.run.method == Method::event) {
@@ -105,6 +112,16 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
     auto run = [&](const auto& bath) {
       return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
         return run_intruder_1d(scene, replica, times, options, bath);
+      });
+    };
+    if (in.bath == BathKind::gaussian) return run(GaussianBath{in.bath_a, in.bath_density});
+    return run(PowerLawBath{in.bath_a, in.bath_density});
+  }
+  if (scene.intruder) {  // method "dsmc": the intruder's DSMC alternative (002 sec. 4)
+    const IntruderConfig& in = *scene.intruder;
+    auto run = [&](const auto& bath) {
+      return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+        return run_intruder_dsmc_1d(scene, replica, times, options, bath);
       });
     };
     if (in.bath == BathKind::gaussian) return run(GaussianBath{in.bath_a, in.bath_density});

@@ -65,7 +65,10 @@ RunPlan plan_run(const Scene& scene, int threads) {
   if (scene.intruder) {  // Gillespie: one intruder per replica; work = collision events
     const IntruderConfig& in = *scene.intruder;
     plan.effects.push_back(in.bath == BathKind::gaussian ? "Gaussian bath (002 eq. 18)" : "power-law bath (002 eq. 23)");
-    plan.effects.push_back("colliding bath velocities sampled exactly (no window)");
+    plan.effects.push_back(scene.run.method == Method::dsmc
+                               ? "DSMC alternative (002 sec. 4): candidates at rho (|v1| + <|v|>) with the exact "
+                                 "majorant |v1 - v| <= |v1| + |v|, bath velocities drawn from f"
+                               : "colliding bath velocities sampled exactly (no window)");
     if (in.dimension == 2)
       plan.effects.push_back("needle of length L: event times from the integrated flux by Newton with a bisection "
                              "fallback (002 eqs. 27-28), impact point sampled exactly (002 eq. 29)");
