@@ -59,15 +59,20 @@ def main():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-    x = np.linspace(0, edges[-1], 400)
+    reach = edges[1:][ok].max()  # the populated shells only
+    x = np.linspace(0, reach, 400)
+    floor = 0.3 * density[ok].min()
     for ax, log in zip(axes, (False, True)):
-        ax.errorbar(centres[ok], density[ok], yerr=err[ok], fmt=".", ms=3, color="k", label="granmc (CI)")
+        lower = np.minimum(err[ok], density[ok] - floor) if log else err[ok]  # keep log error bars above 0
+        ax.errorbar(centres[ok], density[ok], yerr=[lower, err[ok]], fmt=".", ms=3, color="k", label="granmc (CI)")
         ax.plot(x, gauss(x, var), "C0-", label=f"Gaussian, <w^2> = {var:.4f}")
         ax.plot(x, gauss(x, s2_fit), "C3--", label=f"best-fit Gaussian, var = {s2_fit:.4f}")
         ax.set_xlabel("|omega|")
         ax.set_ylabel("density of omega")
+        ax.set_xlim(0, reach)
         if log:
             ax.set_yscale("log")
+            ax.set_ylim(floor, 2 * density[ok].max())
     axes[0].legend(fontsize="small")
     fig.suptitle(f"002 Fig. 8: needle M/m = 0.1, alpha = 0.1; kurtosis {k_mean:.3f} +- {k_ci:.3f} (Gaussian 3)",
                  fontsize="small")
