@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
 .PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
-	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost
+	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost bench-effects
 
 all: build
 
@@ -97,6 +97,10 @@ test: build
 
 bench: build
 	cmake --build $(BUILD) --target bench
+
+# Cost of each effect (issue 8 item 3, perf/bench_effects.cpp): ratios to the plain scene, about 70 s.
+bench-effects: build
+	cmake --build $(BUILD) --target bench-effects
 
 clean:
 	rm -rf $(BUILD)

@@ -33,6 +33,91 @@ struct CollisionTally {
   double twice_energy_loss = 0.0;  // sum over collisions of 2 x (kinetic energy lost), stored units
 };
 
+namespace detail {
+
+/// The stage with the number of ordered pairs known at compile time when it is one (`one_pair`): then the
+/// pair's constants, majorant and tally live in locals (registers) and no candidate looks them up. The
+/// arithmetic and its order are the same in both forms, so the results are the same bits.
+template <class Kernel, bool one_pair, std::uint64_t batch>
+void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
+                     std::span<const std::uint64_t> candidates, const RandomStream& rng,
+                     std::span<CollisionTally> tallies) noexcept {
+  static_assert(batch > 0);
+  constexpr std::size_t max_pairs = 4;  // ordered pairs of at most two species (the scene's limit)
+  const std::size_t n_pairs = one_pair ? 1 : pairs.size();
+  std::uint64_t remaining[max_pairs] = {};
+  std::uint64_t total = 0;
+  double majorant[max_pairs];
+  CollisionTally tally[max_pairs];
+  for (std::size_t q = 0; q < n_pairs; ++q) {
+    remaining[q] = candidates[q];
+    total += candidates[q];
+    majorant[q] = omega_max[q];
+    tally[q] = tallies[q];
+    tally[q].candidates += candidates[q];
+  }
+  std::uint64_t ks[batch], ls[batch];
+  std::uint8_t qs[batch];
+  RandomBlock draws[batch];
+  for (std::uint64_t s0 = 0; s0 < total; s0 += batch) {
+    const std::uint64_t m = std::min(batch, total - s0);
+    for (std::uint64_t b = 0; b < m; ++b) {
+      const std::uint64_t s = s0 + b;
+      const RandomBlock pick = rng.block(RngPurpose::collision_pair, 0, state.step, 2 * s);
+      draws[b] = rng.block(RngPurpose::collision_pair, 0, state.step, 2 * s + 1);
+      std::size_t q = 0;
+      if constexpr (!one_pair) {  // the next candidate's pair, without replacement: a uniformly random interleaving
+        double r = uniform_open(draws[b][3]) * static_cast<double>(total - s);
+        // r < sum of remaining exactly (integers below 2^53), so this stops at a pair with candidates left.
+        while (q + 1 < n_pairs && r >= static_cast<double>(remaining[q])) r -= static_cast<double>(remaining[q++]);
+        --remaining[q];
+        qs[b] = static_cast<std::uint8_t>(q);
+      }
+      const PairCoefficients& p = pairs[q];
+      const bool same_species = p.i == p.j;
+      const std::uint64_t na = state.species[p.i].size();
+      const std::uint64_t nb = same_species ? na - 1 : state.species[p.j].size();
+      ks[b] = uniform_index(pick[0], pick[1], na);
+      ls[b] = uniform_index(pick[2], pick[3], nb);
+      // Uniform over the other N_i - 1 particles; branch-free: a branch here is taken half the time at
+      // random, and its mispredictions discard the overlapped work of the next candidates.
+      ls[b] += static_cast<std::uint64_t>(same_species & (ls[b] >= ks[b]));
+      state.species[p.i].prefetch(ks[b]);
+      state.species[p.j].prefetch(ls[b]);
+    }
+    for (std::uint64_t b = 0; b < m; ++b) {
+      const std::size_t q = one_pair ? 0 : qs[b];
+      const PairCoefficients& p = pairs[q];
+      SpeciesStore& sa = state.species[p.i];
+      SpeciesStore& sb = state.species[p.j];
+      const RandomBlock& draw = draws[b];
+      const Vec3 sigma = unit_vector(uniform_open(draw[0]), uniform_open(draw[1]));
+      Vec3 vk = sa.velocity(ks[b]);
+      Vec3 vl = sb.velocity(ls[b]);
+      const double g_sigma = dot(vk - vl, sigma);
+      if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
+      const double omega = p.rate_prefactor * Kernel::rate(g_sigma, norm2(vk - vl));
+      if (omega > majorant[q]) {
+        majorant[q] = omega;
+        ++tally[q].majorant_updates;
+      } else if (uniform_open(draw[2]) * majorant[q] > omega) {
+        continue;
+      }
+      inelastic_collision(vk, vl, sigma, g_sigma, p);
+      sa.set_velocity(ks[b], vk);
+      sb.set_velocity(ls[b], vl);
+      ++tally[q].collisions;
+      tally[q].twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
+    }
+  }
+  for (std::size_t q = 0; q < n_pairs; ++q) {
+    omega_max[q] = majorant[q];
+    tallies[q] = tally[q];
+  }
+}
+
+}  // namespace detail
+
 /// Random words per candidate s of the step: block 2s gives the two particle indices (64 bits each),
 /// block 2s + 1 the direction (two 32-bit uniforms), the acceptance uniform and the pair choice.
 ///
@@ -45,69 +130,10 @@ template <class Kernel, std::uint64_t batch = 64>
 void collide_step(GasState& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                   std::span<const std::uint64_t> candidates, const RandomStream& rng,
                   std::span<CollisionTally> tallies) noexcept {
-  static_assert(batch > 0);
-  constexpr std::size_t max_pairs = 4;  // ordered pairs of at most two species (the scene's limit)
-  const std::size_t n_pairs = pairs.size();
-  std::uint64_t remaining[max_pairs] = {};
-  std::uint64_t total = 0;
-  for (std::size_t q = 0; q < n_pairs; ++q) {
-    remaining[q] = candidates[q];
-    total += candidates[q];
-    tallies[q].candidates += candidates[q];
-  }
-  std::uint64_t ks[batch], ls[batch];
-  std::uint8_t qs[batch];
-  RandomBlock draws[batch];
-  for (std::uint64_t s0 = 0; s0 < total; s0 += batch) {
-    const std::uint64_t m = std::min(batch, total - s0);
-    for (std::uint64_t b = 0; b < m; ++b) {
-      const std::uint64_t s = s0 + b;
-      const RandomBlock pick = rng.block(RngPurpose::collision_pair, 0, state.step, 2 * s);
-      draws[b] = rng.block(RngPurpose::collision_pair, 0, state.step, 2 * s + 1);
-      std::size_t q = 0;
-      if (n_pairs > 1) {  // the next candidate's pair, without replacement: a uniformly random interleaving
-        double r = uniform_open(draws[b][3]) * static_cast<double>(total - s);
-        // r < sum of remaining exactly (integers below 2^53), so this stops at a pair with candidates left.
-        while (q + 1 < n_pairs && r >= static_cast<double>(remaining[q])) r -= static_cast<double>(remaining[q++]);
-      }
-      --remaining[q];
-      qs[b] = static_cast<std::uint8_t>(q);
-      const PairCoefficients& p = pairs[q];
-      const bool same_species = p.i == p.j;
-      const std::uint64_t na = state.species[p.i].size();
-      const std::uint64_t nb = same_species ? na - 1 : state.species[p.j].size();
-      ks[b] = uniform_index(pick[0], pick[1], na);
-      ls[b] = uniform_index(pick[2], pick[3], nb);
-      if (same_species && ls[b] >= ks[b]) ++ls[b];  // uniform over the other N_i - 1 particles
-      state.species[p.i].prefetch(ks[b]);
-      state.species[p.j].prefetch(ls[b]);
-    }
-    for (std::uint64_t b = 0; b < m; ++b) {
-      const PairCoefficients& p = pairs[qs[b]];
-      CollisionTally& tally = tallies[qs[b]];
-      double& majorant = omega_max[qs[b]];
-      SpeciesStore& sa = state.species[p.i];
-      SpeciesStore& sb = state.species[p.j];
-      const RandomBlock& draw = draws[b];
-      const Vec3 sigma = unit_vector(uniform_open(draw[0]), uniform_open(draw[1]));
-      Vec3 vk = sa.velocity(ks[b]);
-      Vec3 vl = sb.velocity(ls[b]);
-      const double g_sigma = dot(vk - vl, sigma);
-      if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
-      const double omega = p.rate_prefactor * Kernel::rate(g_sigma, norm2(vk - vl));
-      if (omega > majorant) {
-        majorant = omega;
-        ++tally.majorant_updates;
-      } else if (uniform_open(draw[2]) * majorant > omega) {
-        continue;
-      }
-      inelastic_collision(vk, vl, sigma, g_sigma, p);
-      sa.set_velocity(ks[b], vk);
-      sb.set_velocity(ls[b], vl);
-      ++tally.collisions;
-      tally.twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
-    }
-  }
+  if (pairs.size() == 1)
+    detail::collide_batches<Kernel, true, batch>(state, pairs, omega_max, candidates, rng, tallies);
+  else
+    detail::collide_batches<Kernel, false, batch>(state, pairs, omega_max, candidates, rng, tallies);
 }
 
 }  // namespace granmc

@@ -1,0 +1,191 @@
+#pragma once
+// A hand-specialised time step for the plain scene of perf/bench_effects.cpp, written for that case
+// alone: one species of equal-mass inelastic hard spheres, dilute (chi = 1), no thermostat, no other
+// effect. It is the reference that issue 8 item 3 asks the library's plain scene to match (within 3%).
+//
+// Same algorithm and random-number layout as collide_step<HardSphere> (kernel/schemes/collision_stage.hpp,
+// 000 sec. 3): candidate s of step t uses Philox block (collision_pair, 0, t, 2 s) for the indices k and
+// l != k, block 2 s + 1 for the direction (words 0, 1) and the acceptance uniform (word 2); candidates
+// are drawn in batches of 64 with their records prefetched, then processed in order. The result is the
+// same bits as collide_step on the same state and seed (checked at the start of bench_effects).
+//
+// What it leaves out of the generic stage: the pair table (the constants are locals), the interleaving
+// of species pairs (no pair draw, no per-candidate pair lookup), the Kernel template (omega = prefactor
+// g.sigma inline), the effects, and the tally and majorant held through references (here locals that
+// stay in registers). The velocity record is the library's 32-byte (x, y, z, aux) record in a huge-page
+// buffer, since that layout is a separate, measured choice (perf/bench_layout.cpp). Not used by the
+// library.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+#include "kernel/core/aligned_buffer.hpp"
+#include "kernel/core/philox_stream.hpp"
+#include "kernel/core/sampling.hpp"
+#include "kernel/core/vec3.hpp"
+
+namespace granmc::perf {
+
+struct alignas(32) HandRecord {
+  double x, y, z, aux;
+};
+static_assert(sizeof(HandRecord) == 32);
+
+struct HandConstants {
+  double rate_prefactor = 0.0;     // 4 pi sigma^2 n (000 sec. 3, chi = 1)
+  double one_plus_alpha = 2.0;     // 1 + alpha
+  double twice_energy_loss = 0.0;  // 2 x (1 - alpha^2) m / 4: twice the energy lost / (g.sigma)^2
+
+  /// The same expressions as pair_coefficients, so the same bits.
+  static HandConstants of(double alpha, double diameter, double density, double mass) noexcept {
+    const double sigma = 0.5 * (diameter + diameter);
+    return {4.0 * std::numbers::pi * sigma * sigma * density, 1.0 + alpha,
+            2.0 * (0.5 * (1.0 - alpha * alpha) * mass * mass / (mass + mass))};
+  }
+};
+
+struct HandTally {
+  std::uint64_t collisions = 0;
+  std::uint64_t majorant_updates = 0;
+  double twice_energy_loss = 0.0;
+};
+
+/// The collision stage of step `step`: `candidates` candidate pairs among the n records of v.
+template <std::uint64_t batch = 64>
+HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::uint64_t candidates,
+                       const RandomStream& rng, std::uint64_t step, const HandConstants& c) noexcept {
+  const double prefactor = c.rate_prefactor, one_plus_alpha = c.one_plus_alpha, loss = c.twice_energy_loss;
+  double majorant = omega_max;
+  HandTally t;
+  std::uint64_t ks[batch], ls[batch];
+  RandomBlock draws[batch];
+  for (std::uint64_t s0 = 0; s0 < candidates; s0 += batch) {
+    const std::uint64_t m = std::min(batch, candidates - s0);
+    for (std::uint64_t b = 0; b < m; ++b) {
+      const std::uint64_t s = s0 + b;
+      const RandomBlock pick = rng.block(RngPurpose::collision_pair, 0, step, 2 * s);
+      draws[b] = rng.block(RngPurpose::collision_pair, 0, step, 2 * s + 1);
+      const std::uint64_t k = uniform_index(pick[0], pick[1], n);
+      std::uint64_t l = uniform_index(pick[2], pick[3], n - 1);
+      if (l >= k) ++l;  // uniform over the other n - 1
+      ks[b] = k;
+      ls[b] = l;
+      __builtin_prefetch(v + k, 1, 3);
+      __builtin_prefetch(v + l, 1, 3);
+    }
+    for (std::uint64_t b = 0; b < m; ++b) {
+      const RandomBlock& d = draws[b];
+      const Vec3 s = unit_vector(uniform_open(d[0]), uniform_open(d[1]));
+      HandRecord& a = v[ks[b]];
+      HandRecord& e = v[ls[b]];
+      const double gx = a.x - e.x, gy = a.y - e.y, gz = a.z - e.z;
+      const double g_sigma = gx * s.x + gy * s.y + gz * s.z;
+      if (g_sigma <= 0.0) continue;  // Theta(g.sigma)
+      const double omega = prefactor * g_sigma;
+      if (omega > majorant) {
+        majorant = omega;  // majorant exceeded: accept and update (000 sec. 3)
+        ++t.majorant_updates;
+      } else if (uniform_open(d[2]) * majorant > omega) {
+        continue;
+      }
+      const double h = 0.5 * (one_plus_alpha * g_sigma);  // equal masses: mu = 1/2
+      a.x -= h * s.x;                                     // 000 eq. (14)
+      a.y -= h * s.y;
+      a.z -= h * s.z;
+      e.x += h * s.x;  // 000 eq. (15)
+      e.y += h * s.y;
+      e.z += h * s.z;
+      ++t.collisions;
+      t.twice_energy_loss += loss * g_sigma * g_sigma;
+    }
+  }
+  omega_max = majorant;
+  return t;
+}
+
+/// Whole time steps of the plain scene with hand_collide: 1/2 (N - 1) omega_max u dt candidates (the
+/// fraction carried), the stored energy tracked from the losses, and the same rescaling as Dsmc (remove
+/// the centre-of-mass velocity, unit stored temperature, scale into log u) when the stored energy has
+/// fallen by a factor 1.25. The gas only cools, so only the lower bound is checked.
+class HandHcs {
+ public:
+  static constexpr double rescale_factor = 1.25;  // as Dsmc
+
+  /// `c0`: the n initial stored velocities with scale log_u; initial majorant as Dsmc's, 2 max |c|.
+  template <class Velocities>
+  HandHcs(const Velocities& c0, std::uint64_t n, double log_u, const HandConstants& constants, const RandomStream& rng)
+      : v_(n), n_(n), c_(constants), rng_(rng), log_u_(log_u) {
+    double max2 = 0.0;
+    for (std::uint64_t k = 0; k < n; ++k) {
+      const Vec3 c = c0(k);
+      v_[k] = {c.x, c.y, c.z, 0.0};
+    }
+    rescale();
+    for (std::uint64_t k = 0; k < n; ++k)
+      max2 = std::max(max2, v_[k].x * v_[k].x + v_[k].y * v_[k].y + v_[k].z * v_[k].z);
+    omega_max_ = c_.rate_prefactor * 2.0 * std::sqrt(max2);
+    rescales_ = 0;
+  }
+
+  void step(double dt) noexcept {
+    const double wanted = 0.5 * static_cast<double>(n_ - 1) * omega_max_ * std::exp(log_u_) * dt + carried_;
+    const double whole = std::floor(wanted);
+    carried_ = wanted - whole;
+    const auto candidates = static_cast<std::uint64_t>(whole);
+    const HandTally t = hand_collide(v_.data(), n_, omega_max_, candidates, rng_, step_, c_);
+    candidates_ += candidates;
+    collisions_ += t.collisions;
+    twice_energy_ -= t.twice_energy_loss;
+    ++step_;
+    if (twice_energy_ < reference_ / rescale_factor) rescale();
+  }
+
+  [[nodiscard]] std::uint64_t particles() const noexcept { return n_; }
+  [[nodiscard]] double omega_max() const noexcept { return omega_max_; }
+  [[nodiscard]] double log_u() const noexcept { return log_u_; }
+  [[nodiscard]] std::uint64_t steps() const noexcept { return step_; }
+  [[nodiscard]] std::uint64_t candidates() const noexcept { return candidates_; }
+  [[nodiscard]] std::uint64_t collisions() const noexcept { return collisions_; }
+  [[nodiscard]] std::uint64_t rescales() const noexcept { return rescales_; }
+
+ private:
+  void rescale() noexcept {
+    double sx = 0.0, sy = 0.0, sz = 0.0, s2 = 0.0;
+    for (std::uint64_t k = 0; k < n_; ++k) {
+      const HandRecord& r = v_[k];
+      sx += r.x;
+      sy += r.y;
+      sz += r.z;
+      s2 += r.x * r.x + r.y * r.y + r.z * r.z;
+    }
+    const double nd = static_cast<double>(n_);
+    const double cx = sx / nd, cy = sy / nd, cz = sz / nd;
+    const double s = std::sqrt(3.0 * nd / (s2 - (sx * sx + sy * sy + sz * sz) / nd));
+    for (std::uint64_t k = 0; k < n_; ++k) {
+      HandRecord& r = v_[k];
+      r.x = s * (r.x - cx);
+      r.y = s * (r.y - cy);
+      r.z = s * (r.z - cz);
+    }
+    log_u_ -= std::log(s);
+    twice_energy_ = reference_ = 3.0 * nd;
+    ++rescales_;
+  }
+
+  AlignedBuffer<HandRecord> v_;
+  std::uint64_t n_;
+  HandConstants c_;
+  RandomStream rng_;
+  double log_u_;
+  double omega_max_ = 0.0;
+  double carried_ = 0.0;
+  double twice_energy_ = 0.0;
+  double reference_ = 0.0;
+  std::uint64_t step_ = 0;
+  std::uint64_t candidates_ = 0;
+  std::uint64_t collisions_ = 0;
+  std::uint64_t rescales_ = 0;
+};
+
+}  // namespace granmc::perf
