@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/observe/moments.hpp"
@@ -33,7 +34,7 @@ Scene example(CollisionKernel kernel, double beta, std::int64_t particles, int r
   s.run.samples = 16;
   s.species.push_back({"a", 1.0, 1.0, 1.0, particles});
   s.collision.kernel = kernel;
-  s.collision.lambda = kernel == CollisionKernel::maxwell ? 0.0 : 1.0;
+  s.collision.lambda = kernel == CollisionKernel::maxwell ? 0.0 : kernel == CollisionKernel::vhs ? 0.5 : 1.0;
   s.collision.rate = 1.0 / std::numbers::pi;
   s.collision.restitution = {{{0.5, 0.5}, {0.5, 0.5}}};
   if (beta > 0.0) {
@@ -104,6 +105,31 @@ TEST(EventScheme, ElasticHardSphereCollisionRateIsExact) {
   const MeanCI m = replica_mean(ratio);
   EXPECT_NEAR(m.mean, 1.0, m.ci);
   std::printf("collisions / (2 pi rate (n-1) <|u|> t) = %.5f +- %.5f\n", m.mean, m.ci);
+}
+
+TEST(EventScheme, ElasticCollisionRatesAreExactInBothSchemes) {
+  // Elastic, no noise: real collisions per unit time 2 pi rate (n - 1) <|u|^lambda>, for the event scheme
+  // (001 eqs. 25-26) and for the time-stepped one in the 001 form (prefactor 16 pi rate, N - 1
+  // candidates): VHS lambda = 1/2 and hard spheres.
+  for (auto [kernel, method] : {std::pair{CollisionKernel::vhs, Method::event}, std::pair{CollisionKernel::vhs, Method::dsmc},
+                                std::pair{CollisionKernel::hard_sphere, Method::dsmc}}) {
+    Scene s = example(kernel, 0.0, 20000, 32);
+    s.run.method = method;
+    s.run.dt = 0.02;
+    s.collision.restitution = {{{1.0, 1.0}, {1.0, 1.0}}};
+    s.run.t_end = 1.0;
+    s.run.samples = 5;
+    const RunResult r = run_scene(s, {});
+    const double n = static_cast<double>(s.species[0].particles);
+    const double mean = theory::maxwellian_relative_speed_moment(s.collision.lambda, 1.0 - 1.0 / n);
+    const double expected = 2.0 * std::numbers::pi * s.collision.rate * (n - 1.0) * mean * s.run.t_end;
+    std::vector<double> ratio;
+    for (const ReplicaSeries& rep : r.replicas) ratio.push_back(rep.collisions.back() / expected);
+    const MeanCI m = replica_mean(ratio);
+    EXPECT_NEAR(m.mean, 1.0, m.ci) << method_name(method) << ", lambda = " << s.collision.lambda;
+    std::printf("%s, lambda = %g: collisions / (2 pi rate (n-1) <|u|^lambda> t) = %.5f +- %.5f\n",
+                method_name(method), s.collision.lambda, m.mean, m.ci);
+  }
 }
 
 TEST(EventScheme, FastParticleConservesEnergyAndGrowsTheMajorant) {

@@ -5,12 +5,15 @@
 // prefactor 4 pi sigma_ij^2 n_j chi_ij lives in PairCoefficients.
 //
 // A time-stepped kernel evaluator has: lambda (omega scales as |g|^lambda, so a physical rate is u^lambda
-// times the stored-unit one), rate(g.sigma, |g|^2), and bound(U) >= rate for relative speeds up to U.
+// times the stored-unit one), rate(g.sigma, |g|^2), bound(U) >= rate for relative speeds up to U, and
+// from_scene(scene) (the kernel's parameters; static members where there are none).
 namespace granmc {
 
 struct HardSphere {
   static constexpr double lambda = 1.0;
   static constexpr const char* name = "hard-sphere";
+  template <class Scene>
+  static constexpr HardSphere from_scene(const Scene&) noexcept { return {}; }
   /// Rate factor for normal relative speed g_sigma = g.sigma-hat > 0.
   static constexpr double rate(double g_sigma, double /*g2*/) noexcept { return g_sigma; }
   static constexpr double bound(double relative_speed) noexcept { return relative_speed; }

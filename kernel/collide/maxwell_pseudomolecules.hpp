@@ -13,6 +13,8 @@ namespace granmc {
 struct MaxwellPseudomolecules {
   static constexpr double lambda = 0.0;
   static constexpr const char* name = "maxwell";
+  template <class Scene>
+  static constexpr MaxwellPseudomolecules from_scene(const Scene&) noexcept { return {}; }
   static double rate(double g_sigma, double g2) noexcept { return g_sigma / std::sqrt(g2); }
   static constexpr double bound(double /*relative_speed*/) noexcept { return 1.0; }
 };

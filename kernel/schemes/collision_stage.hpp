@@ -41,7 +41,7 @@ namespace detail {
 template <class Kernel, bool one_pair, std::uint64_t batch>
 void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                      std::span<const std::uint64_t> candidates, const RandomStream& rng,
-                     std::span<CollisionTally> tallies) noexcept {
+                     std::span<CollisionTally> tallies, const Kernel& kernel) noexcept {
   static_assert(batch > 0);
   constexpr std::size_t max_pairs = 4;  // ordered pairs of at most two species (the scene's limit)
   const std::size_t n_pairs = one_pair ? 1 : pairs.size();
@@ -96,7 +96,7 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
       Vec3 vl = sb.velocity(ls[b]);
       const double g_sigma = dot(vk - vl, sigma);
       if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
-      const double omega = p.rate_prefactor * Kernel::rate(g_sigma, norm2(vk - vl));
+      const double omega = p.rate_prefactor * kernel.rate(g_sigma, norm2(vk - vl));
       if (omega > majorant[q]) {
         majorant[q] = omega;
         ++tally[q].majorant_updates;
@@ -129,11 +129,11 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
 template <class Kernel, std::uint64_t batch = 64>
 void collide_step(GasState& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                   std::span<const std::uint64_t> candidates, const RandomStream& rng,
-                  std::span<CollisionTally> tallies) noexcept {
+                  std::span<CollisionTally> tallies, const Kernel& kernel = {}) noexcept {
   if (pairs.size() == 1)
-    detail::collide_batches<Kernel, true, batch>(state, pairs, omega_max, candidates, rng, tallies);
+    detail::collide_batches<Kernel, true, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel);
   else
-    detail::collide_batches<Kernel, false, batch>(state, pairs, omega_max, candidates, rng, tallies);
+    detail::collide_batches<Kernel, false, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel);
 }
 
 }  // namespace granmc

@@ -7,6 +7,7 @@
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/collide/maxwell_pseudomolecules.hpp"
+#include "kernel/collide/variable_hard_spheres.hpp"
 #include "kernel/effects/gaussian_thermostat.hpp"
 #include "kernel/effects/white_noise.hpp"
 #include "kernel/schemes/dsmc_replica.hpp"
@@ -24,7 +25,7 @@ namespace {
 // species and the Enskog chi need no instantiation of their own: both only change the pair constants.
 constexpr const char* supported_list =
     "supported: method = \"dsmc\" with kernel = \"hard-sphere\", one or two species, any packing_fraction in "
-    "[0, 1) (Enskog chi), or kernel = \"maxwell\" with collision.rate > 0 and one species; thermostat kind = "
+    "[0, 1) (Enskog chi), or kernel = \"maxwell\" or \"vhs\" with collision.rate > 0 and one species; thermostat kind = "
     "\"none\", \"gaussian\" (a fixed zeta or \"cooling-rate\") or \"white-noise\"; shear rate = 0, "
     "relaxation disabled; method = \"event\" with one species, collision.rate > 0 (the "
     "form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or \"white-noise\", "
@@ -70,9 +71,8 @@ std::string unsupported_reason(const Scene& scene) {
   else if (scene.intruder && !(scene.run.t_end / scene.run.dt < static_cast<double>(RandomStream::counter_limit)))
     what = "an intruder DSMC run with more than 2^48 time steps (raise run.dt)";
   else if (scene.intruder) what = {};
-  else if (scene.collision.kernel == CollisionKernel::vhs) what = "method = \"dsmc\" with kernel = \"vhs\"";
-  else if (scene.collision.kernel == CollisionKernel::maxwell && !(scene.collision.rate > 0.0))
-    what = "method = \"dsmc\" with kernel = \"maxwell\" and collision.rate = 0 (set the rate of 001)";
+  else if (scene.collision.kernel != CollisionKernel::hard_sphere && !(scene.collision.rate > 0.0))
+    what = "method = \"dsmc\" with kernel = \"maxwell\" or \"vhs\" and collision.rate = 0 (set the rate of 001)";
   else if (scene.species.empty() || scene.species.size() > 2) what = "a scene without one or two [[species]]";
   else if (scene.shear_rate != 0.0) what = "a [shear] rate";
   else if (scene.relaxation) what = "the [relaxation] term";
@@ -93,7 +93,9 @@ std::string instantiation_name(const Scene& scene) {
     return std::string("event<") + kernel + (scene.thermostat.kind == ThermostatKind::white_noise ? ", white-noise>" : ">");
   }
   std::string name = std::string("dsmc<") +
-                     (scene.collision.kernel == CollisionKernel::maxwell ? MaxwellPseudomolecules::name : HardSphere::name);
+                     (scene.collision.kernel == CollisionKernel::maxwell ? MaxwellPseudomolecules::name
+                      : scene.collision.kernel == CollisionKernel::vhs  ? VariableHardSpheres::name
+                                                                        : HardSphere::name);
   if (scene.thermostat.kind == ThermostatKind::gaussian) name += ", gaussian-thermostat";
   if (scene.thermostat.kind == ThermostatKind::white_noise) name += ", white-noise";
   name += ">";
@@ -138,6 +140,7 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
     return run(VhsKernel{scene.collision.lambda});
   }
   if (scene.collision.kernel == CollisionKernel::maxwell) return run_dsmc<MaxwellPseudomolecules>(scene, options);
+  if (scene.collision.kernel == CollisionKernel::vhs) return run_dsmc<VariableHardSpheres>(scene, options);
   return run_dsmc<HardSphere>(scene, options);
 }
 

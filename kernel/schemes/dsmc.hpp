@@ -40,6 +40,7 @@ class Dsmc {
   Dsmc(const Scene& scene, std::uint64_t replica, Effects... effects)
       : scene_(scene),
         rng_(scene.run.seed, replica),
+        kernel_(Kernel::from_scene(scene)),
         pairs_(pair_coefficients(scene)),
         effects_(effects...),
         state_(maxwellian_state(scene, rng_)) {
@@ -58,7 +59,7 @@ class Dsmc {
       max_speed.push_back(std::sqrt(m));
     }
     for (const PairCoefficients& p : pairs_) {
-      omega_max_.push_back(p.rate_prefactor * Kernel::bound(max_speed[p.i] + max_speed[p.j]));
+      omega_max_.push_back(p.rate_prefactor * kernel_.bound(max_speed[p.i] + max_speed[p.j]));
       carried_.push_back(0.0);
       pair_totals_.emplace_back();
       step_tallies_.emplace_back();
@@ -96,7 +97,7 @@ class Dsmc {
   void step(double dt) {
     run_phase<StepPhase::free_flight>({dt, twice_energy_, 0.0, &rng_});
 
-    const double u_dt = std::exp(Kernel::lambda * state_.scale.log_u + std::log(dt));  // u^lambda dt
+    const double u_dt = std::exp(kernel_.lambda * state_.scale.log_u + std::log(dt));  // u^lambda dt
     for (std::size_t q = 0; q < pairs_.size(); ++q) {
       const PairCoefficients& p = pairs_[q];
       const double n_i = static_cast<double>(state_.species[p.i].size());
@@ -114,7 +115,7 @@ class Dsmc {
       candidates_[q] = static_cast<std::uint64_t>(whole);
     }
     std::fill(step_tallies_.begin(), step_tallies_.end(), CollisionTally{});
-    collide_step<Kernel>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_);
+    collide_step<Kernel>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_, kernel_);
     CollisionTally tally;
     for (std::size_t q = 0; q < pairs_.size(); ++q) {
       add(pair_totals_[q], step_tallies_[q]);
@@ -167,6 +168,7 @@ class Dsmc {
 
   const Scene& scene_;
   RandomStream rng_;
+  Kernel kernel_;
   std::vector<PairCoefficients> pairs_;
   std::tuple<Effects...> effects_;
   GasState state_;

@@ -120,6 +120,9 @@ RunPlan plan_run(const Scene& scene, int threads) {
     const double max_b = expected_max_speed(static_cast<double>(b.particles)) / std::sqrt(b.mass);
     if (scene.collision.kernel == CollisionKernel::maxwell)  // omega_max = prefactor, whatever T
       plan.candidates += 0.5 * static_cast<double>(a.particles) * p.rate_prefactor * scene.run.t_end;
+    else if (scene.collision.kernel == CollisionKernel::vhs)  // omega_max = prefactor U^lambda, T held at T(0)
+      plan.candidates += 0.5 * static_cast<double>(a.particles) * p.rate_prefactor *
+                         std::pow((max_a + max_b) * u0, scene.collision.lambda) * scene.run.t_end;
     else
       plan.candidates += 0.5 * static_cast<double>(a.particles) * p.rate_prefactor * (max_a + max_b) * u0 * u_time;
   }
