@@ -3,6 +3,7 @@
 // of the direction distribution on equal-area cells). Each check would fail without what it checks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
