@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
 .PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
-	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost bench-effects
+	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost accuracy-cost bench-effects
 
 all: build
 
@@ -62,6 +62,10 @@ fig-002-8: build
 	$(PYTHON) drivers/plot_needle_angular.py results/002_fig8/needle.h5 results/002_fig8
 
 figures-002: fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8
+
+# Work-precision on 001 Example 3 (docs/accuracy-cost.md): error against particles, replicas, dt, method.
+accuracy-cost: build
+	$(PYTHON) drivers/accuracy_cost.py --granmc $(GRANMC)
 
 # Gillespie against the DSMC alternative for the 1D intruder (docs/accuracy-cost.md).
 intruder-cost: build
