@@ -10,9 +10,11 @@
 #include "kernel/collide/bath_power_law.hpp"
 #include "kernel/observe/replica_statistics.hpp"
 #include "kernel/schemes/dispatch.hpp"
+#include "tests/intruder_averages.hpp"
 #include "kernel/theory/intruder.hpp"
 
 using namespace granmc;
+using granmc::testing::velocity_average;
 
 namespace {
 
@@ -31,20 +33,6 @@ Scene intruder_scene(BathKind bath, double mass, double alpha, double t_end) {
   in.bath_density = 1.5;
   s.intruder = in;
   return s;
-}
-
-/// Per replica, the time average of value(v1) over the last half of the samples; then mean and CI.
-template <class F>
-MeanCI velocity_average(const RunResult& r, F value) {
-  std::vector<double> per_replica;
-  for (const ReplicaSeries& rep : r.replicas) {
-    const std::vector<double>& v = rep.intruder->velocity;
-    double sum = 0.0;
-    const std::size_t first = first_stationary_sample(v.size());
-    for (std::size_t k = first; k < v.size(); ++k) sum += value(v[k]);
-    per_replica.push_back(sum / static_cast<double>(v.size() - first));
-  }
-  return replica_mean(per_replica);
 }
 
 }  // namespace

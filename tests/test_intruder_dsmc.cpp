@@ -16,11 +16,12 @@
 #include "kernel/collide/bath_power_law.hpp"
 #include "kernel/observe/replica_statistics.hpp"
 #include "kernel/schemes/dispatch.hpp"
+#include "tests/intruder_averages.hpp"
 #include "kernel/schemes/intruder_dsmc_1d.hpp"
-#include "kernel/schemes/replica_runner.hpp"
 #include "kernel/theory/intruder.hpp"
 
 using namespace granmc;
+using granmc::testing::velocity_average;
 
 namespace {
 
@@ -43,30 +44,8 @@ Scene intruder_scene(BathKind bath, double mass, double alpha, double t_end, dou
   return s;
 }
 
-RunResult run_dsmc_intruder(const Scene& s, const RunOptions& options = {}) {
-  auto run = [&](const auto& bath) {
-    return run_replicas(s, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-      return run_intruder_dsmc_1d(s, replica, times, options, bath);
-    });
-  };
-  const IntruderConfig& in = *s.intruder;
-  if (in.bath == BathKind::gaussian) return run(GaussianBath{in.bath_a, in.bath_density});
-  return run(PowerLawBath{in.bath_a, in.bath_density});
-}
-
-/// Per replica, the time average of value(v1) over the last half of the samples; then mean and CI.
-template <class F>
-MeanCI velocity_average(const RunResult& r, F value) {
-  std::vector<double> per_replica;
-  for (const ReplicaSeries& rep : r.replicas) {
-    const std::vector<double>& v = rep.intruder->velocity;
-    double sum = 0.0;
-    const std::size_t first = first_stationary_sample(v.size());
-    for (std::size_t k = first; k < v.size(); ++k) sum += value(v[k]);
-    per_replica.push_back(sum / static_cast<double>(v.size() - first));
-  }
-  return replica_mean(per_replica);
-}
+/// Through the one dispatch site, as `granmc run` does (method "dsmc" with an [intruder]).
+RunResult run_dsmc_intruder(const Scene& s, const RunOptions& options = {}) { return run_scene(s, options); }
 
 /// Power law in x = sqrt(a) v: P(|x| < X) = (2 sqrt 2 / pi) A(X), and
 /// int_{|x| < X} x^2 f = (2 sqrt 2 / pi) B(X), B(X) = int_0^X t^2 / (1 + t^4) dt = (atan(sqrt2 X + 1) + atan(sqrt2 X - 1)) / sqrt 2 - A(X).

@@ -16,7 +16,7 @@
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
-#include "kernel/observe/gas_series.hpp"
+#include "kernel/observe/intruder_record.hpp"
 #include "kernel/schemes/run_options.hpp"
 
 namespace granmc {
@@ -27,48 +27,27 @@ ReplicaSeries run_intruder_1d(const Scene& scene, std::uint64_t replica, const s
   const IntruderConfig& in = *scene.intruder;
   const RandomStream rng(scene.run.seed, replica);
   const double kick = (1.0 + in.restitution) / (1.0 + in.mass);  // 002 eq. (21), m = 1
-  const double radius = scene.histogram.radius;
-  const std::size_t shells = static_cast<std::size_t>(scene.histogram.shells);
-  const std::size_t first_stationary = first_stationary_sample(times.size());
-
-  ReplicaSeries series;
-  IntruderSeries record;
-  record.speed_counts.assign(shells, 0.0);
-  // Start from a Maxwellian at the scene's initial temperature: v1 ~ N(0, T(0) / M).
-  const RandomBlock start = rng.block(RngPurpose::initial_velocity, 0, 0, 0);
-  double z, unused;
-  standard_normal_pair(uniform_open(start[0]), uniform_open(start[1]), z, unused);
-  double v1 = z * std::sqrt(scene.initial_temperature / in.mass);
+  IntruderRecord1D record(scene, times.size());
+  double v1 = initial_intruder_velocity(scene, rng);
 
   double t = 0.0;
   std::uint64_t event = 0;
-  std::size_t k = 0;
   auto observe = [&] {
-    const double temperature = in.mass * v1 * v1;
-    series.temperature.push_back(temperature);
-    series.log_temperature.push_back(std::log(temperature));
-    series.collisions.push_back(static_cast<double>(event));
-    record.velocity.push_back(v1);
-    if (k >= first_stationary) {
-      const double shell = std::fabs(v1) / radius * static_cast<double>(shells);
-      if (shell < static_cast<double>(shells)) record.speed_counts[static_cast<std::size_t>(shell)] += 1.0;
-      ++series.histogram_samples;
-    }
+    record.observe(v1, event);
     if (options.on_sample) options.on_sample();
-    ++k;
   };
-  while (k < times.size()) {
+  while (record.samples() < times.size()) {
     const double flux_plus = bath.flux_right(v1), flux_minus = bath.flux_right(-v1);
     const double flux = flux_plus + flux_minus;  // 002 eq. (7)
     const RandomBlock draw = rng.block(RngPurpose::intruder_event, 0, event, 0);
     const double next = t - std::log(uniform_open(draw[0])) / flux;  // 002 eq. (10)
-    while (k < times.size() && times[k] <= next) observe();
-    if (k == times.size()) break;
+    while (record.samples() < times.size() && times[record.samples()] <= next) observe();
+    if (record.samples() == times.size()) break;
     t = next;
     const bool right = uniform_open(draw[1]) * flux < flux_plus;  // 002 eq. (11)
     double v = 0.0;
     for (std::uint64_t attempt = 1;; ++attempt) {
-      ++record.sampling_attempts;
+      record.count_sampling_attempt();
       const RandomBlock u = rng.block(RngPurpose::intruder_event, 0, event, attempt);
       if (right ? bath.try_sample_right(v1, u, v) : bath.try_sample_right(-v1, u, v)) break;
     }
@@ -76,9 +55,7 @@ ReplicaSeries run_intruder_1d(const Scene& scene, std::uint64_t replica, const s
     v1 += kick * (v - v1);    // 002 eq. (21)
     ++event;
   }
-  series.candidates = record.sampling_attempts;
-  series.intruder = std::move(record);
-  return series;
+  return record.finish(record.sampling_attempts());
 }
 
 }  // namespace granmc

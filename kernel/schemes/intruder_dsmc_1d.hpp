@@ -52,7 +52,7 @@
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
-#include "kernel/observe/gas_series.hpp"
+#include "kernel/observe/intruder_record.hpp"
 #include "kernel/schemes/run_options.hpp"
 
 namespace granmc {
@@ -101,54 +101,33 @@ ReplicaSeries run_intruder_dsmc_1d(const Scene& scene, std::uint64_t replica, co
   const double kick = (1.0 + in.restitution) / (1.0 + in.mass);  // 002 eq. (21), m = 1
   const double sqrt_a = std::sqrt(bath.a);
   const double mean_x = intruder_dsmc::mean_speed(bath);  // <|x|>
-  const double radius = scene.histogram.radius;
-  const std::size_t shells = static_cast<std::size_t>(scene.histogram.shells);
-  const std::size_t first_stationary = first_stationary_sample(times.size());
-
-  ReplicaSeries series;
-  IntruderSeries record;
-  record.speed_counts.assign(shells, 0.0);
-  // Start from a Maxwellian at the scene's initial temperature: v1 ~ N(0, T(0) / M), as the Gillespie scheme.
-  const RandomBlock start = rng.block(RngPurpose::initial_velocity, 0, 0, 0);
-  double z, unused;
-  standard_normal_pair(uniform_open(start[0]), uniform_open(start[1]), z, unused);
-  double v1 = z * std::sqrt(scene.initial_temperature / in.mass);
+  IntruderRecord1D record(scene, times.size());
+  double v1 = initial_intruder_velocity(scene, rng);  // as the Gillespie scheme
 
   // 1 / Lambda(v1), Lambda = rho (|v1| + <|v|>) >= phi(v1) (002 eq. 7): the gap to the next candidate.
   auto gap = [&](double v) { return sqrt_a / (bath.rho * (sqrt_a * std::fabs(v) + mean_x)); };
   double clock = gap(v1);  // time of the next candidate
   std::uint64_t step = 0, block = 0, candidates = 0, collisions = 0;
-  std::size_t k = 0;
   auto observe = [&] {
-    const double temperature = in.mass * v1 * v1;
-    series.temperature.push_back(temperature);
-    series.log_temperature.push_back(std::log(temperature));
-    series.collisions.push_back(static_cast<double>(collisions));
-    record.velocity.push_back(v1);
-    if (k >= first_stationary) {
-      const double shell = std::fabs(v1) / radius * static_cast<double>(shells);
-      if (shell < static_cast<double>(shells)) record.speed_counts[static_cast<std::size_t>(shell)] += 1.0;
-      ++series.histogram_samples;
-    }
+    record.observe(v1, collisions);
     if (options.on_sample) options.on_sample();
-    ++k;
   };
   while (true) {
-    while (k < times.size() && times[k] <= clock) observe();
-    if (k == times.size()) break;
+    while (record.samples() < times.size() && times[record.samples()] <= clock) observe();
+    if (record.samples() == times.size()) break;
     if (const auto s = static_cast<std::uint64_t>(clock / dt); s != step) {  // the candidate's step
       step = s;
       block = 0;
     }
     const RandomBlock u = rng.block(RngPurpose::intruder_event, 1, step, block++);
     ++candidates;
-    ++record.sampling_attempts;
+    record.count_sampling_attempt();
     const double c = sqrt_a * std::fabs(v1);  // |x1|
     double x;
     if (uniform_open(u[0]) * (c + mean_x) < c) {  // v ~ f, weight |v1|
       bool drawn = intruder_dsmc::try_sample_law(bath, uniform_open(u[1]), uniform_open(u[2]), x);
       while (!drawn) {
-        ++record.sampling_attempts;
+        record.count_sampling_attempt();
         const RandomBlock r = rng.block(RngPurpose::intruder_event, 1, step, block++);
         drawn = intruder_dsmc::try_sample_law(bath, uniform_open(r[0]), uniform_open(r[1]), x);
       }
@@ -162,9 +141,7 @@ ReplicaSeries run_intruder_dsmc_1d(const Scene& scene, std::uint64_t replica, co
     }
     clock += gap(v1);
   }
-  series.candidates = candidates;
-  series.intruder = std::move(record);
-  return series;
+  return record.finish(candidates);
 }
 
 }  // namespace granmc

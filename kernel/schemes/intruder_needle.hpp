@@ -27,7 +27,7 @@
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
-#include "kernel/observe/gas_series.hpp"
+#include "kernel/observe/intruder_record.hpp"
 #include "kernel/schemes/run_options.hpp"
 
 namespace granmc {
@@ -62,10 +62,6 @@ inline ReplicaSeries run_intruder_needle(const Scene& scene, std::uint64_t repli
   std::uint64_t event = 0;
   std::size_t k = 0;
   EventTimeCounters counters;
-  auto add = [&](std::vector<double>& counts, double value) {
-    const double shell = std::fabs(value) / radius * static_cast<double>(shells);
-    if (shell < static_cast<double>(shells)) counts[static_cast<std::size_t>(shell)] += 1.0;
-  };
   auto observe = [&] {
     const double v2 = state.vx * state.vx + state.vy * state.vy;
     const double temperature = (body.mass * v2 + body.inertia * state.omega * state.omega) / 3.0;
@@ -76,8 +72,8 @@ inline ReplicaSeries run_intruder_needle(const Scene& scene, std::uint64_t repli
     record.velocity_y.push_back(state.vy);
     record.angular_velocity.push_back(state.omega);
     if (k >= first_stationary) {
-      add(record.speed_counts, std::sqrt(v2));
-      add(record.angular_counts, state.omega);
+      add_to_shells(record.speed_counts, std::sqrt(v2), radius);
+      add_to_shells(record.angular_counts, state.omega, radius);
       ++series.histogram_samples;
     }
     if (options.on_sample) options.on_sample();
