@@ -15,7 +15,9 @@ Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.pack
 Plotted quantities (y): "temperature_ratio" (gamma = T_1/T_2), "temperature_ratio_relative"
 (gamma(x)/gamma(x = 0) of the same curve, 000 Fig. 5), "cumulants" (c_i = 2 a2_i per species, 000 Fig. 1),
 "intruder_temperature_ratio" (T/T_B of a Gillespie intruder, 002 Figs. 3-4; "alpha" then sets
-intruder.restitution), "needle_correlation" (R of the 2D needle, 002 eq. 34 and Fig. 7).
+intruder.restitution), "needle_correlation" (R of the 2D needle, 002 eq. 34 and Fig. 7),
+"viscosity_over_eta0" (eta/eta0 of one species under shear, 000 Fig. 6 and 003), "viscosity_kinetic_over_eta0",
+"viscosity_star" and "viscosity_kinetic_star" (eta* and eta^k* = nu eta / n T, 000 Figs. 10-12).
 """
 import argparse
 import copy
@@ -124,6 +126,11 @@ def simulated(summary, y):
     if y == "needle_correlation":
         r = summary["intruder"]["R"]
         return [("", r["mean"], r["ci"])]
+    if y.startswith("viscosity_"):
+        key = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
+               "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}[y]
+        r = summary["viscosity"][key]
+        return [("", r["mean"], r["ci"])]
     if y == "cumulants":
         species = summary["species"]
         return [(f", species {sp['name']}" if len(species) > 1 else "", 2.0 * sp["a2_last_half"]["mean"],
@@ -147,6 +154,15 @@ def theoretical(th, y):
             out["Gaussian bath, eq. 22"] = [i["temperature_ratio_gaussian_bath"]]
     elif y == "needle_correlation":
         out["equilibrium, R = 1"] = [1.0]
+    elif y.startswith("viscosity_") and "viscosity" in th:
+        key = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
+               "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}[y]
+        v = th["viscosity"]
+        if "first_sonine_gaussian_thermostat" in v:  # one species: both reference states (000 Fig. 6 a, b)
+            out["first Sonine, HSS"] = [v["first_sonine_gaussian_thermostat"][key]]
+            out["first Sonine, HCS"] = [v["first_sonine_cooling_state"][key]]
+        elif key in v.get("first_sonine", {}):
+            out["first Sonine"] = [v["first_sonine"][key]]
     elif y == "cumulants":
         m = th.get("mixture")
         if m:

@@ -216,6 +216,47 @@ void write_series(Writer& w, const std::string& path, const MeanCISeries& stats,
             what + " of each replica (rows) at each sample time (columns) (" + units + ")");
 }
 
+/// A shear run: /viscosity with the window results as attributes and the reduced series; the full reduced
+/// pressure tensors per replica as [R x S x 6] (xx, yy, zz, xy, xz, yz).
+void write_viscosity(Writer& w, const RunResult& result, const ViscosityReport& v) {
+  const std::size_t replicas = result.replicas.size(), samples = result.times.size();
+  w.group("/viscosity", "uniform shear flow (000 secs. 2-3): eta* = nu eta / (n T) = -(P_xy / n T) / a*, averaged "
+                        "over the window t >= window_start; attributes *_mean, *_ci (lambda_p = 3.2)");
+  auto stat = [&](const std::string& name, const MeanCI& m) {
+    w.attribute("/viscosity", (name + "_mean").c_str(), m.mean);
+    w.attribute("/viscosity", (name + "_ci").c_str(), m.ci);
+  };
+  stat("eta_star", v.eta);
+  stat("eta_kinetic_star", v.eta_kinetic);
+  stat("eta", v.eta_scene_units);
+  stat("eta_kinetic", v.eta_kinetic_scene_units);
+  if (v.eta_over_eta0) {
+    stat("eta_over_eta0", *v.eta_over_eta0);
+    stat("eta_kinetic_over_eta0", *v.eta_kinetic_over_eta0);
+  }
+  stat("drift", v.drift);
+  w.attribute("/viscosity", "steady", static_cast<std::int64_t>(v.steady));
+  w.attribute("/viscosity", "window_start", v.window_start);
+  auto series = [&](const std::string& name, const MeanCISeries& m, const std::string& what) {
+    w.doubles("/viscosity/" + name + "_mean", m.mean, "replica mean of " + what + " at each sample time");
+    w.doubles("/viscosity/" + name + "_ci", m.ci, "confidence half-width of " + what);
+  };
+  series("reduced_shear_rate", v.reduced_shear_rate, "a* = a / nu, nu = sqrt(pi) n sigma_12^2 v0");
+  series("pressure_xy", v.pressure_xy, "P_xy / (n T), kinetic + collisional");
+  series("pressure_kinetic_xy", v.pressure_kinetic_xy, "P^k_xy / (n T) (000 eq. 17)");
+  series("eta_star", v.eta_star, "eta* = -P_xy / (n T a*)");
+  series("eta_kinetic_star", v.eta_kinetic_star, "eta^k* = -P^k_xy / (n T a*)");
+  for (const char* part : {"kinetic", "collisional"}) {
+    std::vector<double> rows;
+    for (const ReplicaSeries& s : result.replicas)
+      for (const SymTensor& t : part[0] == 'k' ? s.pressure_kinetic : s.pressure_collisional)
+        rows.insert(rows.end(), {t.xx, t.yy, t.zz, t.xy, t.xz, t.yz});
+    w.doubles(std::string("/viscosity/pressure_") + part, rows, {replicas, samples, 6},
+              std::string(part) + " pressure tensor over n T of each replica at each sample (xx, yy, zz, xy, xz, yz); " +
+                  (part[0] == 'k' ? "at the sample (000 eq. 17)" : "averaged since the previous sample (000 eq. 18)"));
+  }
+}
+
 void write_intruder(Writer& w, const RunResult& result, const IntruderReport& in) {
   const std::size_t replicas = result.replicas.size();
   w.group("/intruder", "Gillespie intruder (002): attributes temperature_ratio_mean, temperature_ratio_ci (T/T_B, "
@@ -337,6 +378,7 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
   }
 
   if (report.intruder) write_intruder(w, result, *report.intruder);
+  if (report.viscosity) write_viscosity(w, result, *report.viscosity);
   std::vector<double> momentum;
   for (const ReplicaSeries& s : result.replicas)
     for (const Vec3& p : s.momentum) momentum.insert(momentum.end(), {p.x, p.y, p.z});

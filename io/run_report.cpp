@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "kernel/observe/compensated_sum.hpp"
+#include "kernel/observe/pressure_tensor.hpp"
 #include "kernel/theory/intruder.hpp"
 
 namespace granmc {
@@ -33,6 +34,11 @@ void check_shapes(const RunResult& result) {
     } else {
       require_length(s.momentum.size(), samples, "momentum", r);
       require_length(s.momentum_relative.size(), samples, "momentum_relative", r);
+      if (!s.pressure_kinetic.empty() || !result.replicas.front().pressure_kinetic.empty()) {  // shear
+        require_length(s.pressure_kinetic.size(), samples, "pressure_kinetic", r);
+        require_length(s.pressure_collisional.size(), samples, "pressure_collisional", r);
+        require_length(s.reduced_shear_rate.size(), samples, "reduced_shear_rate", r);
+      }
     }
     require_length(s.collisions.size(), samples, "collisions", r);
     require_length(s.species.size(), species, "species", r);
@@ -173,6 +179,78 @@ IntruderReport intruder_report(const Scene& scene, const RunResult& result) {
 
 }  // namespace
 
+/// Per replica r the mean of rows[r][k] over first <= k < last, then the replica mean.
+MeanCI window_mean(const std::vector<std::vector<double>>& rows, std::size_t first, std::size_t last) {
+  std::vector<double> per_replica;
+  for (const std::vector<double>& row : rows) {
+    CompensatedSum sum;
+    for (std::size_t k = first; k < last; ++k) sum.add(row[k]);
+    per_replica.push_back(sum.value() / static_cast<double>(last - first));
+  }
+  return replica_mean(per_replica);
+}
+
+ViscosityReport viscosity_report(const Scene& scene, const RunResult& result) {
+  ViscosityReport out;
+  const std::size_t samples = result.times.size();
+  // eta*(t_k) = -(P^k_xy + P^c_xy) / (n T a*): P^k at t_k, P^c averaged over (t_{k-1}, t_k].
+  std::vector<std::vector<double>> p_xy, pk_xy, eta, eta_k;
+  for (const ReplicaSeries& s : result.replicas) {
+    std::vector<double> p(samples), pk(samples), e(samples), ek(samples);
+    for (std::size_t k = 0; k < samples; ++k) {
+      pk[k] = s.pressure_kinetic[k].xy;
+      p[k] = pk[k] + s.pressure_collisional[k].xy;
+      const double a_star = s.reduced_shear_rate[k];
+      e[k] = k == 0 ? std::nan("") : -p[k] / a_star;  // no collisional average at t = 0
+      ek[k] = -pk[k] / a_star;
+    }
+    p_xy.push_back(std::move(p));
+    pk_xy.push_back(std::move(pk));
+    eta.push_back(std::move(e));
+    eta_k.push_back(std::move(ek));
+  }
+  const std::size_t replicas = result.replicas.size();
+  auto rows = [&](const std::vector<std::vector<double>>& v) {
+    return per_index(replicas, samples, [&](std::size_t r) -> const auto& { return v[r]; });
+  };
+  out.reduced_shear_rate = per_time(result, [](const ReplicaSeries& s) -> const auto& { return s.reduced_shear_rate; });
+  out.pressure_xy = rows(p_xy);
+  out.pressure_kinetic_xy = rows(pk_xy);
+  out.eta_star = rows(eta);
+  out.eta_kinetic_star = rows(eta_k);
+
+  const std::size_t first = std::max<std::size_t>(1, first_stationary_sample(samples));
+  out.window_start = result.times[first];
+  out.eta = window_mean(eta, first, samples);
+  out.eta_kinetic = window_mean(eta_k, first, samples);
+  if (scene.species.size() == 1) {
+    const double to_eta0 = 16.0 / (5.0 * std::sqrt(2.0));  // eta / eta0 = eta* 16 / (5 sqrt 2) (theory/viscosity.hpp)
+    out.eta_over_eta0 = MeanCI{to_eta0 * out.eta.mean, to_eta0 * out.eta.ci};
+    out.eta_kinetic_over_eta0 = MeanCI{to_eta0 * out.eta_kinetic.mean, to_eta0 * out.eta_kinetic.ci};
+  }
+  const double t_final = per_time(result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; }).mean.back();
+  const double to_scene = total_density(scene) * t_final / effective_collision_frequency(scene, t_final);
+  out.eta_scene_units = MeanCI{to_scene * out.eta.mean, to_scene * out.eta.ci};
+  out.eta_kinetic_scene_units = MeanCI{to_scene * out.eta_kinetic.mean, to_scene * out.eta_kinetic.ci};
+  out.reduced_shear_rate_min = out.reduced_shear_rate_max = out.reduced_shear_rate.mean[first];
+  for (std::size_t k = first; k < samples; ++k) {
+    out.reduced_shear_rate_min = std::min(out.reduced_shear_rate_min, out.reduced_shear_rate.mean[k]);
+    out.reduced_shear_rate_max = std::max(out.reduced_shear_rate_max, out.reduced_shear_rate.mean[k]);
+  }
+  // The plateau test: eta* over the second half of the window against the first half, per replica.
+  const std::size_t middle = first + (samples - first) / 2;
+  if (middle > first && samples > middle) {
+    std::vector<double> drift;
+    for (std::size_t r = 0; r < replicas; ++r) {
+      const std::vector<std::vector<double>> row{eta[r]};
+      drift.push_back(window_mean(row, middle, samples).mean - window_mean(row, first, middle).mean);
+    }
+    out.drift = replica_mean(drift);
+    out.steady = replicas > 1 && std::fabs(out.drift.mean) <= out.drift.ci;
+  }
+  return out;
+}
+
 RunReport make_run_report(const Scene& scene, const RunResult& result, double wall_seconds) {
   check_shapes(result);
   RunReport report;
@@ -222,6 +300,7 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
     });
   report.theory = theory::cooling_state(scene, result.times);
   if (scene.intruder && result.replicas.front().intruder) report.intruder = intruder_report(scene, result);
+  if (!result.replicas.front().pressure_kinetic.empty()) report.viscosity = viscosity_report(scene, result);
   return report;
 }
 

@@ -78,6 +78,25 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
   j["species"] = std::move(species);
   j["speed_shell_edges"] = numbers(report.speed_shell_edges);
   if (report.temperature_ratio) j["temperature_ratio"] = mean_ci(*report.temperature_ratio);
+  if (report.viscosity) {
+    const ViscosityReport& v = *report.viscosity;
+    nlohmann::json& out = j["viscosity"];
+    out = {{"eta", mean_ci(v.eta_scene_units)},
+           {"eta_kinetic", mean_ci(v.eta_kinetic_scene_units)},
+           {"eta_star", mean_ci(v.eta)},
+           {"eta_kinetic_star", mean_ci(v.eta_kinetic)},
+           {"window_start", number(v.window_start)},
+           {"reduced_shear_rate_range", numbers({v.reduced_shear_rate_min, v.reduced_shear_rate_max})},
+           {"drift", mean_ci(v.drift)},
+           {"steady", v.steady},
+           {"reduced_shear_rate", mean_ci(v.reduced_shear_rate)},
+           {"pressure_xy", mean_ci(v.pressure_xy)},
+           {"eta_star_series", mean_ci(v.eta_star)}};
+    if (v.eta_over_eta0) {
+      out["eta_over_eta0"] = mean_ci(*v.eta_over_eta0);
+      out["eta_kinetic_over_eta0"] = mean_ci(*v.eta_kinetic_over_eta0);
+    }
+  }
   if (report.theory) {
     j["theory"] = cooling_state_json(*report.theory);
   }

@@ -39,13 +39,28 @@ Scene small_heated_scene(Method method) {
   return s;
 }
 
+/// Enskog uniform shear flow with 003's relaxation term (shift, pressure tensor, replacements).
+Scene small_sheared_scene() {
+  Scene s = small_cooling_scene();
+  s.species[0].density = 0.4;
+  s.collision.packing_fraction = 0.2;
+  s.thermostat.kind = ThermostatKind::gaussian;
+  s.shear_rate = 0.5;
+  s.relaxation = true;
+  return s;
+}
+
+std::string scheme_name(int which) {
+  const char* names[] = {"Cooling", "EventWhiteNoise", "DsmcWhiteNoise", "EnskogShearRelaxation"};
+  return names[which];
+}
+
 }  // namespace
 
 class ThreadIdentity : public ::testing::TestWithParam<int> {};
 
-INSTANTIATE_TEST_SUITE_P(Schemes, ThreadIdentity, ::testing::Values(0, 1, 2),
-                         [](const auto& info) {
-                           return std::string(info.param == 0 ? "Cooling" : info.param == 1 ? "EventWhiteNoise" : "DsmcWhiteNoise");
+INSTANTIATE_TEST_SUITE_P(Schemes, ThreadIdentity, ::testing::Values(0, 1, 2, 3),
+                         [](const auto& info) { return scheme_name(info.param);
                          });
 
 namespace {
@@ -53,6 +68,7 @@ namespace {
 Scene scene_for(int which) {
   if (which == 1) return small_heated_scene(Method::event);
   if (which == 2) return small_heated_scene(Method::dsmc);
+  if (which == 3) return small_sheared_scene();
   return small_cooling_scene();
 }
 
@@ -74,6 +90,9 @@ TEST_P(ThreadIdentity, OneAndTwoThreadsGiveTheSameBits) {
     EXPECT_TRUE(bit_identical(x.momentum, y.momentum)) << "replica " << r;
     EXPECT_TRUE(bit_identical(x.collisions, y.collisions)) << "replica " << r;
     EXPECT_EQ(x.candidates, y.candidates);
+    ASSERT_EQ(x.pressure_collisional.size(), y.pressure_collisional.size());
+    EXPECT_EQ(std::memcmp(x.pressure_collisional.data(), y.pressure_collisional.data(),
+                          x.pressure_collisional.size() * sizeof(SymTensor)), 0);
   }
   // Replicas are different realisations, not copies.
   EXPECT_NE(a.replicas[0].temperature.back(), a.replicas[1].temperature.back());

@@ -35,7 +35,9 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       p.mu_ji = b.mass / (a.mass + b.mass);
       p.mu_ij = a.mass / (a.mass + b.mass);
       p.one_plus_alpha = 1.0 + alpha;
+      p.reduced_mass = a.mass * b.mass / (a.mass + b.mass);
       p.energy_loss = 0.5 * (1.0 - alpha * alpha) * a.mass * b.mass / (a.mass + b.mass);
+      p.diameter = sigma_ij;
       pairs.push_back(p);
     }
   }

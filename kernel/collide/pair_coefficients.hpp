@@ -15,6 +15,8 @@ struct PairCoefficients {
   double mu_ij = 0.0;            // m_i / (m_i + m_j), moves particle l (000 eq. 15)
   double one_plus_alpha = 2.0;   // 1 + alpha_ij
   double energy_loss = 0.0;      // (1 - alpha_ij^2) m_i m_j / (2 (m_i + m_j)): loss / (g.sigma)^2
+  double reduced_mass = 0.0;     // m_i m_j / (m_i + m_j): the impulse is (1 + alpha_ij) reduced_mass (g.sigma)
+  double diameter = 0.0;         // sigma_ij = (sigma_i + sigma_j) / 2
 };
 
 /// The ordered pairs (i, j) of the scene's species, both orders as 000 sec. 3 does.

@@ -16,6 +16,7 @@ enum class RngPurpose : std::uint16_t {
   event_candidate = 5,   // event scheme (001 sec. 4): sub = 0, step = waiting-time draw, index = block 0..3
   brownian_sync = 6,     // event scheme: sub = 0, step = sample index, index = particle (Remark 2 update)
   white_noise_kick = 7,  // time-stepped white noise: sub = species, step = time step, index = particle
+  relaxation = 8,        // BGK-like relaxation (003): sub = 0, step = time step, index = block 0, 1, ...
 };
 
 }  // namespace granmc

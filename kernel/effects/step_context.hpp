@@ -19,7 +19,8 @@
 
 namespace granmc {
 
-enum class StepPhase { free_flight, after_collisions };
+// in_collision: an evaluator the collision stage itself uses (collide/enskog_shear_shift.hpp); it has no apply.
+enum class StepPhase { free_flight, after_collisions, in_collision };
 
 struct StepContext {
   double dt = 0.0;                 // step length, scene time

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/core/sym_tensor.hpp"
 #include "kernel/core/vec3.hpp"
 
 namespace granmc {
@@ -56,6 +57,11 @@ struct ReplicaSeries {
   std::uint64_t majorant_violations = 0;   // event scheme: candidates whose relative speed exceeded the
                                            // U_max their waiting time was drawn with (schemes/event_white_noise.hpp)
   std::vector<double> majorant_growth;     // per ordered pair: final / initial omega_max (stored units)
+  // Shear runs (000 secs. 2-3; observe/pressure_tensor.hpp), each at every sample time:
+  std::vector<SymTensor> pressure_kinetic;      // P^k / (n T) at the sample (000 eq. 17)
+  std::vector<SymTensor> pressure_collisional;  // P^c / (n T) averaged since the previous sample (eq. 18);
+                                                // zero at t = 0 and in the Boltzmann limit
+  std::vector<double> reduced_shear_rate;       // a* = a / nu, nu = sqrt(pi) n sigma_12^2 v_0 (000 Fig. 10)
   std::uint64_t rescales = 0;              // velocity rescalings (long cooling runs)
   double momentum_removed_relative = 0.0;  // sum over rescalings of the removed |P| / sqrt(M 2 E)
   std::optional<IntruderSeries> intruder;  // method "gillespie"

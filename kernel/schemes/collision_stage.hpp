@@ -14,14 +14,19 @@
 //
 // Velocities are in stored units (V = u c); omega_max and omega_kl are in units of u (their physical
 // values are u times these), which leaves the acceptance ratio unchanged.
+//
+// `Shift` is the relative velocity at contact: NoCollisionShift (V_k - V_l) or, for shear in the Enskog
+// gas, collide/enskog_shear_shift.hpp, which also tallies the shear work and the collisional transfer.
 #include <algorithm>
 #include <cstdint>
 #include <span>
 
+#include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
+#include "kernel/core/sym_tensor.hpp"
 #include "kernel/schemes/gas_state.hpp"
 
 namespace granmc {
@@ -31,6 +36,9 @@ struct CollisionTally {
   std::uint64_t collisions = 0;
   std::uint64_t majorant_updates = 0;
   double twice_energy_loss = 0.0;  // sum over collisions of 2 x (kinetic energy lost), stored units
+  // With an active Shift only (stored units, masses in scene units):
+  double twice_energy_shear_work = 0.0;  // 2 x the energy the shift put in: -2 J s per collision
+  SymTensor transfer;                    // sum over collisions of J sigma_ij sigma-hat sigma-hat (000 eq. 18)
 };
 
 namespace detail {
@@ -38,10 +46,10 @@ namespace detail {
 /// The stage with the number of ordered pairs known at compile time when it is one (`one_pair`): then the
 /// pair's constants, majorant and tally live in locals (registers) and no candidate looks them up. The
 /// arithmetic and its order are the same in both forms, so the results are the same bits.
-template <class Kernel, bool one_pair, std::uint64_t batch>
+template <class Kernel, class Shift, bool one_pair, std::uint64_t batch>
 void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                      std::span<const std::uint64_t> candidates, const RandomStream& rng,
-                     std::span<CollisionTally> tallies, const Kernel& kernel) noexcept {
+                     std::span<CollisionTally> tallies, const Kernel& kernel, const Shift& shift) noexcept {
   static_assert(batch > 0);
   constexpr std::size_t max_pairs = 4;  // ordered pairs of at most two species (the scene's limit)
   const std::size_t n_pairs = one_pair ? 1 : pairs.size();
@@ -94,9 +102,11 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
       const Vec3 sigma = unit_vector(uniform_open(draw[0]), uniform_open(draw[1]));
       Vec3 vk = sa.velocity(ks[b]);
       Vec3 vl = sb.velocity(ls[b]);
-      const double g_sigma = dot(vk - vl, sigma);
+      Vec3 g = vk - vl;
+      if constexpr (Shift::active) g = shift.relative_velocity(vk, vl, sigma, p);
+      const double g_sigma = dot(g, sigma);
       if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
-      const double omega = p.rate_prefactor * kernel.rate(g_sigma, norm2(vk - vl));
+      const double omega = p.rate_prefactor * kernel.rate(g_sigma, norm2(g));
       if (omega > majorant[q]) {
         majorant[q] = omega;
         ++tally[q].majorant_updates;
@@ -108,6 +118,11 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
       sb.set_velocity(ls[b], vl);
       ++tally[q].collisions;
       tally[q].twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
+      if constexpr (Shift::active) {  // collide/enskog_shear_shift.hpp
+        const double impulse = p.one_plus_alpha * p.reduced_mass * g_sigma;
+        tally[q].twice_energy_shear_work -= 2.0 * impulse * p.diameter * shift.rate * sigma.x * sigma.y;
+        tally[q].transfer += weighted_dyad(impulse * p.diameter, sigma);
+      }
     }
   }
   for (std::size_t q = 0; q < n_pairs; ++q) {
@@ -126,14 +141,14 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
 /// candidates of a batch that share a particle therefore still act in sequence, and the result is the
 /// same for every batch size (tests/test_collision_stage.cpp); the batch only lets the memory loads of
 /// different candidates overlap (perf/bench_collisions.cpp: 1.4x at N = 10^5, 3x at N = 10^7).
-template <class Kernel, std::uint64_t batch = 64>
+template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift>
 void collide_step(GasState& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                   std::span<const std::uint64_t> candidates, const RandomStream& rng,
-                  std::span<CollisionTally> tallies, const Kernel& kernel = {}) noexcept {
+                  std::span<CollisionTally> tallies, const Kernel& kernel = {}, const Shift& shift = {}) noexcept {
   if (pairs.size() == 1)
-    detail::collide_batches<Kernel, true, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel);
+    detail::collide_batches<Kernel, Shift, true, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
   else
-    detail::collide_batches<Kernel, false, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel);
+    detail::collide_batches<Kernel, Shift, false, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
 }
 
 }  // namespace granmc

@@ -4,11 +4,14 @@
 
 #include "kernel/collide/bath_gaussian.hpp"
 #include "kernel/collide/bath_power_law.hpp"
+#include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/collide/maxwell_pseudomolecules.hpp"
 #include "kernel/collide/variable_hard_spheres.hpp"
+#include "kernel/effects/bgk_relaxation.hpp"
 #include "kernel/effects/gaussian_thermostat.hpp"
+#include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/effects/white_noise.hpp"
 #include "kernel/schemes/dsmc_replica.hpp"
 #include "kernel/schemes/event_replica.hpp"
@@ -16,6 +19,7 @@
 #include "kernel/schemes/intruder_dsmc_1d.hpp"
 #include "kernel/schemes/intruder_needle.hpp"
 #include "kernel/schemes/replica_runner.hpp"
+#include "kernel/theory/sonine.hpp"
 
 namespace granmc {
 
@@ -26,8 +30,10 @@ namespace {
 constexpr const char* supported_list =
     "supported: method = \"dsmc\" with kernel = \"hard-sphere\", one or two species, any packing_fraction in "
     "[0, 1) (Enskog chi), or kernel = \"maxwell\" or \"vhs\" with collision.rate > 0 and one species; thermostat kind = "
-    "\"none\", \"gaussian\" (a fixed zeta or \"cooling-rate\") or \"white-noise\"; shear rate = 0, "
-    "relaxation disabled; method = \"event\" with one species, collision.rate > 0 (the "
+    "\"none\", \"gaussian\" (a fixed zeta or \"cooling-rate\") or \"white-noise\"; a [shear] rate with "
+    "hard spheres and thermostat \"none\" or \"gaussian\" (Boltzmann, or Enskog with the shifted contact "
+    "velocity when packing_fraction > 0); the [relaxation] term of 003 for one species of hard spheres with "
+    "the Gaussian thermostat compensating the cooling rate; method = \"event\" with one species, collision.rate > 0 (the "
     "form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or \"white-noise\", "
     "packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of dimension 1 in "
     "a \"gaussian\" or \"power-law\" bath, or of dimension 2 (the needle) in a \"gaussian\" bath; method = "
@@ -45,18 +51,33 @@ std::string unsupported_event(const Scene& scene) {
   return {};
 }
 
-/// The time-stepped scheme with the kernel K and the thermostat the scene names (none is an empty pack).
-template <class K>
-RunResult run_dsmc(const Scene& scene, const RunOptions& options) {
+/// The time-stepped scheme with the kernel K, the effects `before` (shear) and the thermostat the scene
+/// names (none is an empty pack); `white_noise` says whether that instantiation exists.
+template <class K, bool white_noise, class... Before>
+RunResult run_dsmc(const Scene& scene, const RunOptions& options, Before... before) {
   auto run = [&](auto... effects) {
     return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-      return run_dsmc_replica<K>(scene, replica, times, options, effects...);
+      return run_dsmc_replica<K>(scene, replica, times, options, before..., effects...);
     });
   };
   const ThermostatConfig& th = scene.thermostat;
+  if (th.kind == ThermostatKind::gaussian && scene.relaxation)  // 003: thermostat, then the relaxation term
+    return run(GaussianThermostat{th.zeta_is_cooling_rate, th.zeta},
+               BgkRelaxation{SonineMaxwellian(theory::hcs_a2(scene.collision.restitution[0][0])), scene.species[0].mass});
   if (th.kind == ThermostatKind::gaussian) return run(GaussianThermostat{th.zeta_is_cooling_rate, th.zeta});
-  if (th.kind == ThermostatKind::white_noise) return run(WhiteNoise{th.beta, &scene});
+  if constexpr (white_noise)
+    if (th.kind == ThermostatKind::white_noise) return run(WhiteNoise{th.beta, &scene});
   return run();
+}
+
+/// Hard spheres with the shear the scene names: the inertial force alone in the Boltzmann limit, with
+/// the Enskog shift of the contact velocity when packing_fraction > 0 (collide/enskog_shear_shift.hpp).
+RunResult run_dsmc_hard_spheres(const Scene& scene, const RunOptions& options) {
+  if (scene.shear_rate == 0.0) return run_dsmc<HardSphere, true>(scene, options);
+  const LagrangianShear shear{scene.shear_rate, &scene};
+  if (scene.collision.packing_fraction > 0.0)
+    return run_dsmc<HardSphere, false>(scene, options, shear, EnskogShearShift{scene.shear_rate});
+  return run_dsmc<HardSphere, false>(scene, options, shear);
 }
 
 }  // namespace
@@ -74,8 +95,13 @@ std::string unsupported_reason(const Scene& scene) {
   else if (scene.collision.kernel != CollisionKernel::hard_sphere && !(scene.collision.rate > 0.0))
     what = "method = \"dsmc\" with kernel = \"maxwell\" or \"vhs\" and collision.rate = 0 (set the rate of 001)";
   else if (scene.species.empty() || scene.species.size() > 2) what = "a scene without one or two [[species]]";
-  else if (scene.shear_rate != 0.0) what = "a [shear] rate";
-  else if (scene.relaxation) what = "the [relaxation] term";
+  else if (scene.shear_rate != 0.0 && scene.collision.kernel != CollisionKernel::hard_sphere)
+    what = "a [shear] rate with kernel = \"maxwell\" or \"vhs\"";
+  else if (scene.shear_rate != 0.0 && scene.thermostat.kind == ThermostatKind::white_noise)
+    what = "a [shear] rate with the white-noise thermostat";
+  else if (scene.relaxation && (scene.species.size() != 1 || scene.collision.kernel != CollisionKernel::hard_sphere ||
+                                !scene.thermostat.zeta_is_cooling_rate))
+    what = "the [relaxation] term other than for one species of hard spheres with zeta = \"cooling-rate\" (003)";
   if (what.empty()) return {};
   return "this version of granmc cannot run " + what + " yet; " + supported_list;
 }
@@ -96,7 +122,10 @@ std::string instantiation_name(const Scene& scene) {
                      (scene.collision.kernel == CollisionKernel::maxwell ? MaxwellPseudomolecules::name
                       : scene.collision.kernel == CollisionKernel::vhs  ? VariableHardSpheres::name
                                                                         : HardSphere::name);
+  if (scene.shear_rate != 0.0) name += ", lagrangian-shear";
+  if (scene.shear_rate != 0.0 && scene.collision.packing_fraction > 0.0) name += ", enskog-shear-shift";
   if (scene.thermostat.kind == ThermostatKind::gaussian) name += ", gaussian-thermostat";
+  if (scene.relaxation) name += ", bgk-relaxation";
   if (scene.thermostat.kind == ThermostatKind::white_noise) name += ", white-noise";
   name += ">";
   if (scene.collision.packing_fraction > 0.0) name += ", Enskog chi in the pair rates";
@@ -139,9 +168,9 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
     if (scene.collision.lambda == 1.0) return run(IsotropicHardSphereKernel{});
     return run(VhsKernel{scene.collision.lambda});
   }
-  if (scene.collision.kernel == CollisionKernel::maxwell) return run_dsmc<MaxwellPseudomolecules>(scene, options);
-  if (scene.collision.kernel == CollisionKernel::vhs) return run_dsmc<VariableHardSpheres>(scene, options);
-  return run_dsmc<HardSphere>(scene, options);
+  if (scene.collision.kernel == CollisionKernel::maxwell) return run_dsmc<MaxwellPseudomolecules, true>(scene, options);
+  if (scene.collision.kernel == CollisionKernel::vhs) return run_dsmc<VariableHardSpheres, true>(scene, options);
+  return run_dsmc_hard_spheres(scene, options);
 }
 
 }  // namespace granmc

@@ -23,6 +23,9 @@
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/scene.hpp"
+#include "kernel/core/sym_tensor.hpp"
+#include "kernel/collide/enskog_shear_shift.hpp"
+#include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/effects/step_context.hpp"
 #include "kernel/observe/gas_observation.hpp"
 #include "kernel/schemes/collision_stage.hpp"
@@ -31,9 +34,27 @@
 
 namespace granmc {
 
+namespace detail {
+/// The in_collision evaluator of the pack (at most one), or NoCollisionShift.
+template <class... Effects>
+struct collision_shift {
+  using type = NoCollisionShift;
+};
+template <class First, class... Rest>
+struct collision_shift<First, Rest...> {
+  using type = std::conditional_t<First::phase == StepPhase::in_collision, First,
+                                  typename collision_shift<Rest...>::type>;
+};
+}  // namespace detail
+
 template <class Kernel, class... Effects>
 class Dsmc {
+  using Shift = typename detail::collision_shift<Effects...>::type;
+
  public:
+  /// Uniform shear flow (effects/lagrangian_shear.hpp) is in the pack: the pressure tensor is observed.
+  static constexpr bool sheared = (std::is_same_v<Effects, LagrangianShear> || ...);
+
   /// Stored energy may drift by this factor before the velocities are rescaled.
   static constexpr double rescale_factor = 1.25;
 
@@ -75,6 +96,17 @@ class Dsmc {
   [[nodiscard]] double momentum_removed_relative() const noexcept { return momentum_removed_; }
   [[nodiscard]] const std::vector<double>& omega_max() const noexcept { return omega_max_; }
 
+  /// The collisional transfer part of the pressure tensor over nT (000 eq. 18, n/(N dt) per collision of
+  /// the sum of J sigma_ij sigma-hat sigma-hat; docs/physics.md derives the factor), averaged over the time
+  /// since the last call; zero without an Enskog shift. Resets the average.
+  SymTensor take_collisional_pressure() noexcept {
+    const double span = state_.time - transfer_since_;
+    const SymTensor mean = span > 0.0 ? (1.0 / span) * transfer_integral_ : SymTensor{};
+    transfer_integral_ = {};
+    transfer_since_ = state_.time;
+    return mean;
+  }
+
   /// Steps until the time reaches t; the last step is shortened to land on t exactly.
   void advance_to(double t) {
     while (state_.time < t) {
@@ -89,9 +121,13 @@ class Dsmc {
     return state_.scale.log_temperature(twice_energy_ / (3.0 * total_particles_));
   }
 
+  /// The thermal time step follows the mean free time, dt ~ T^-1/2 (000 sec. 3). Under shear it never
+  /// exceeds the scene's dt, so a dt (the inertial map per step) stays at most its initial value when the
+  /// gas cools (000 sec. 3: dt small against the mean free time and 1/a).
   double step_length() const noexcept {
     if (scene_.run.dt_scaling == DtScaling::fixed) return scene_.run.dt;
-    return scene_.run.dt * std::exp(0.5 * (log_temperature0_ - log_temperature()));
+    const double thermal = scene_.run.dt * std::exp(0.5 * (log_temperature0_ - log_temperature()));
+    return sheared ? std::min(thermal, scene_.run.dt) : thermal;
   }
 
   void step(double dt) {
@@ -115,11 +151,22 @@ class Dsmc {
       candidates_[q] = static_cast<std::uint64_t>(whole);
     }
     std::fill(step_tallies_.begin(), step_tallies_.end(), CollisionTally{});
-    collide_step<Kernel>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_, kernel_);
+    if constexpr (Shift::active) {
+      collide_step<Kernel, 64>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_, kernel_,
+                               std::get<Shift>(effects_).in_stored_units(state_.scale.u()));
+    } else {
+      collide_step<Kernel>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_, kernel_);
+    }
     CollisionTally tally;
     for (std::size_t q = 0; q < pairs_.size(); ++q) {
       add(pair_totals_[q], step_tallies_[q]);
       add(tally, step_tallies_[q]);
+    }
+    if constexpr (Shift::active) {
+      // This step's share of the time integral of P^c / (n T): n / N u sum / (n u^2 T_stored), with the
+      // stored mixture temperature T_stored = twice_energy / 3N before the collisions.
+      transfer_integral_ += (3.0 / (state_.scale.u() * twice_energy_)) * tally.transfer;
+      twice_energy_ += tally.twice_energy_shear_work;
     }
     twice_energy_ -= tally.twice_energy_loss;
     run_phase<StepPhase::after_collisions>({dt, twice_energy_, tally.twice_energy_loss, &rng_});
@@ -135,6 +182,8 @@ class Dsmc {
     to.collisions += from.collisions;
     to.majorant_updates += from.majorant_updates;
     to.twice_energy_loss += from.twice_energy_loss;
+    to.twice_energy_shear_work += from.twice_energy_shear_work;
+    to.transfer += from.transfer;
   }
 
   /// Runs the effects of one phase in pack order, each seeing the stored energy its predecessors left.
@@ -184,6 +233,8 @@ class Dsmc {
   double log_temperature0_ = 0.0;
   double momentum_removed_ = 0.0;
   std::uint64_t rescales_ = 0;
+  SymTensor transfer_integral_;   // time integral of P^c / (n T) since transfer_since_
+  double transfer_since_ = 0.0;
 };
 
 }  // namespace granmc

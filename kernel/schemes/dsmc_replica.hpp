@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "kernel/observe/gas_observation.hpp"
+#include "kernel/observe/pressure_tensor.hpp"
 #include "kernel/schemes/dsmc.hpp"
 #include "kernel/schemes/run_options.hpp"
 
@@ -19,6 +20,12 @@ ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const 
   for (std::size_t k = 0; k < times.size(); ++k) {
     sim.advance_to(times[k]);
     observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
+    if constexpr (Dsmc<Kernel, Effects...>::sheared) {
+      series.pressure_kinetic.push_back(reduced_kinetic_pressure(scene, sim.state()));
+      series.pressure_collisional.push_back(sim.take_collisional_pressure());
+      series.reduced_shear_rate.push_back(scene.shear_rate /
+                                          effective_collision_frequency(scene, series.temperature.back()));
+    }
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
     if (options.on_sample) options.on_sample();
   }

@@ -93,7 +93,18 @@ RunPlan plan_run(const Scene& scene, int threads) {
     plan.effects.push_back("white noise after each collision stage (splitting, O(N) per step)");
   if (scene.collision.kernel == CollisionKernel::maxwell)
     plan.effects.push_back("Maxwell pseudomolecules in the impact-direction form (16 pi rate (g.sigma)/|g|)");
-  if (scene.run.dt_scaling == DtScaling::thermal) plan.effects.push_back("time step following the thermal speed");
+  if (scene.shear_rate != 0.0) {
+    plan.effects.push_back("uniform shear flow: inertial force V_x -= a V_y dt in free flight (O(N) per step), "
+                           "pressure tensor P^k at each sample");
+    plan.effects.push_back(scene.collision.packing_fraction > 0.0
+                               ? "Enskog shear shift of the contact velocity, collisional transfer P^c tallied"
+                               : "no shift of the contact velocity (Boltzmann limit, P^c = 0)");
+  }
+  if (scene.relaxation)
+    plan.effects.push_back("BGK-like relaxation to the first-Sonine HCS f^(0) (003), O(replaced) per step");
+  if (scene.run.dt_scaling == DtScaling::thermal)
+    plan.effects.push_back(scene.shear_rate != 0.0 ? "time step following the thermal speed, capped at run.dt"
+                                                   : "time step following the thermal speed");
   if (scene.thermostat.kind == ThermostatKind::none) plan.absent.push_back("thermostat");
   if (scene.shear_rate == 0.0) plan.absent.push_back("shear");
   if (!scene.relaxation) plan.absent.push_back("relaxation term");

@@ -1,0 +1,39 @@
+#pragma once
+// The inertial force of uniform shear flow in the Lagrangian frame (000 sec. 3): with u_x = a y, the
+// peculiar velocities obey dV/dt = -a.V, a_{xy} = a, so over a step V_x -> V_x - a V_y dt with V_y and V_z
+// unchanged. The map is linear and a.a = 0, so this first-order form is the exact flow (no splitting error
+// inside the free-flight stage). It is linear in V, so it acts on the stored velocities c = V / u alike.
+// Dilute (Boltzmann) shear needs only this effect; the Enskog shift of the relative velocity at contact
+// lives in collide/enskog_shear_shift.hpp.
+#include "kernel/core/scene.hpp"
+#include "kernel/effects/step_context.hpp"
+#include "kernel/observe/compensated_sum.hpp"
+
+namespace granmc {
+
+struct LagrangianShear {
+  static constexpr StepPhase phase = StepPhase::free_flight;
+
+  double rate = 0.0;             // a (1 / time)
+  const Scene* scene = nullptr;  // species masses
+
+  /// Returns the change of sum_i m_i sum_k |c_k|^2 (stored units): the viscous heating of the kinetic
+  /// part, -2 a dt sum m c_x c_y + (a dt)^2 sum m c_y^2.
+  double apply(GasState& state, const StepContext& step) const noexcept {
+    const double a_dt = rate * step.dt;
+    CompensatedSum change;
+    for (std::size_t i = 0; i < state.species.size(); ++i) {
+      const double mass = scene->species[i].mass;
+      double species_change = 0.0;
+      state.species[i].for_each_velocity([&](Vec3& c) {
+        const double x = c.x - a_dt * c.y;  // 000 sec. 3: V_x -> V_x - a V_y dt
+        species_change += (x - c.x) * (x + c.x);
+        c.x = x;
+      });
+      change.add(mass * species_change);
+    }
+    return change.value();
+  }
+};
+
+}  // namespace granmc

@@ -1,0 +1,201 @@
+// Uniform shear flow in the Lagrangian frame (000 secs. 2-3): the inertial force alone is the exact linear
+// map of V; the Enskog collisional transfer (000 eq. 18) gives the Enskog equation of state at equilibrium;
+// the elastic dilute gas has the Navier-Stokes viscosity 1.016 eta0 (003); collisions with the shifted
+// contact velocity conserve momentum; a* of order 1 at phi = 0.5 stays finite. The BGK-like relaxation term
+// of 003 replaces the right fraction of particles with draws from the first-Sonine cooling state.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "io/run_report.hpp"
+#include "kernel/collide/enskog_chi.hpp"
+#include "kernel/collide/enskog_shear_shift.hpp"
+#include "kernel/collide/hard_sphere.hpp"
+#include "kernel/effects/bgk_relaxation.hpp"
+#include "kernel/effects/lagrangian_shear.hpp"
+#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/schemes/dispatch.hpp"
+#include "kernel/schemes/dsmc.hpp"
+#include "kernel/theory/sonine.hpp"
+
+using namespace granmc;
+
+namespace {
+
+Scene sheared_gas(double alpha, double phi, double shear_rate, int replicas, std::int64_t particles) {
+  Scene s;
+  s.run.seed = 41;
+  s.run.replicas = replicas;
+  s.run.t_end = 4.0;
+  s.run.dt = 0.01;
+  s.run.samples = 40;
+  // density such that phi = pi n sigma^3 / 6 with sigma = 1 (n = 1 in the Boltzmann limit)
+  s.species.push_back({"a", 1.0, 1.0, phi > 0.0 ? 6.0 * phi / std::numbers::pi : 1.0, particles});
+  s.collision.restitution = {{{alpha, alpha}, {alpha, alpha}}};
+  s.collision.packing_fraction = phi;
+  s.thermostat.kind = ThermostatKind::gaussian;
+  s.shear_rate = shear_rate;
+  return s;
+}
+
+std::vector<Vec3> physical_velocities(const GasState& state) {
+  std::vector<Vec3> v;
+  state.species[0].for_each_velocity([&](const Vec3& c) { v.push_back(state.scale.u() * c); });
+  return v;
+}
+
+}  // namespace
+
+TEST(Shear, InertialForceAloneIsTheExactLinearMap) {
+  // Density 1e-14: no collision candidate in the whole run, so only the free flight acts.
+  Scene s = sheared_gas(1.0, 0.0, 1.7, 1, 2000);
+  s.species[0].density = 1e-14;
+  s.thermostat.kind = ThermostatKind::none;
+  Dsmc<HardSphere, LagrangianShear> sim(s, 0, LagrangianShear{s.shear_rate, &s});
+  const std::vector<Vec3> v0 = physical_velocities(sim.state());
+  const double t = 3.0;  // a t = 5.1: the energy grows several times, through rescalings of the store
+  sim.advance_to(t);
+  ASSERT_EQ(sim.tally().candidates, 0u);
+  EXPECT_GT(sim.rescales(), 0u);
+  const std::vector<Vec3> v = physical_velocities(sim.state());
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const Vec3 exact{v0[k].x - s.shear_rate * t * v0[k].y, v0[k].y, v0[k].z};  // V_x - a t V_y
+    const double scale = 1e-12 * (1.0 + norm(exact));
+    EXPECT_NEAR(v[k].x, exact.x, scale);
+    EXPECT_NEAR(v[k].y, exact.y, scale);
+    EXPECT_NEAR(v[k].z, exact.z, scale);
+  }
+}
+
+TEST(Shear, InertialForceReturnsItsEnergyChange) {
+  Scene s = sheared_gas(1.0, 0.0, 0.8, 1, 1000);
+  Dsmc<HardSphere> plain(s, 0);
+  GasState state = plain.state();
+  auto twice_energy = [&] {
+    double e = 0.0;
+    state.species[0].for_each_velocity([&](const Vec3& c) { e += norm2(c); });
+    return e;
+  };
+  const double before = twice_energy();
+  const double change = LagrangianShear{s.shear_rate, &s}.apply(state, {0.05, before, 0.0, nullptr});
+  EXPECT_NEAR(twice_energy() - before, change, 1e-12 * before);
+}
+
+TEST(Shear, EnskogCollisionalTransferGivesTheEquationOfState) {
+  // Elastic hard spheres at equilibrium (a = 0 with the shift compiled in): P^c / (n T) = 4 phi chi times
+  // the unit tensor (Enskog: p = n T (1 + 4 phi chi)), with chi of Carnahan-Starling.
+  const double phi = 0.25;
+  const Scene s = sheared_gas(1.0, phi, 0.0, 1, 4000);
+  const double expected = 4.0 * phi * enskog_chi(phi, {1.0}, {1.0}, 0, 0);
+  std::vector<double> diag, xy;
+  for (std::uint64_t r = 0; r < 12; ++r) {
+    Dsmc<HardSphere, LagrangianShear, EnskogShearShift> sim(s, r, LagrangianShear{0.0, &s}, EnskogShearShift{0.0});
+    sim.advance_to(1.0);
+    const SymTensor p = sim.take_collisional_pressure();
+    diag.push_back(p.trace() / 3.0);
+    xy.push_back(p.xy);
+  }
+  const MeanCI d = replica_mean(diag), o = replica_mean(xy);
+  std::printf("P^c/(nT): diagonal %.5f +- %.5f (Enskog %.5f), xy %.5f +- %.5f\n", d.mean, d.ci, expected, o.mean, o.ci);
+  EXPECT_NEAR(d.mean, expected, d.ci);
+  EXPECT_NEAR(o.mean, 0.0, o.ci);
+}
+
+TEST(Shear, ElasticDiluteGasHasTheNavierStokesViscosity) {
+  // a* = a / nu ~ 0.08 at the start and falling (viscous heating): the shear-thinning correction, of order
+  // a*^2, is below 1 % (docs/physics.md), well inside the replica CI of this run.
+  Scene s = sheared_gas(1.0, 0.0, 0.2, 8, 10000);
+  s.run.t_end = 16.0;
+  s.run.samples = 64;
+  const RunResult result = run_scene(s, {});
+  const RunReport report = make_run_report(s, result, 0.0);
+  ASSERT_TRUE(report.viscosity && report.viscosity->eta_over_eta0);
+  const MeanCI eta = *report.viscosity->eta_over_eta0;
+  std::printf("eta/eta0 = %.4f +- %.4f (exact 1.016), a* in [%.3f, %.3f]\n", eta.mean, eta.ci,
+              report.viscosity->reduced_shear_rate_min, report.viscosity->reduced_shear_rate_max);
+  EXPECT_NEAR(eta.mean, 1.016, eta.ci);
+  EXPECT_LT(report.viscosity->reduced_shear_rate_max, 0.1);
+}
+
+TEST(Shear, ShiftedCollisionsConserveMomentum) {
+  const Scene s = sheared_gas(0.7, 0.3, 1.0, 2, 4000);
+  const RunResult result = run_scene(s, {});
+  for (const ReplicaSeries& r : result.replicas)
+    for (double p : r.momentum_relative) EXPECT_LT(p, 1e-13);
+}
+
+TEST(Shear, LargeShearRateAtHighDensityStaysFinite) {
+  // a* ~ 1 at phi = 0.5 and strong dissipation, no thermostat: the steady shear flow of 000 sec. 5.
+  Scene s = sheared_gas(0.5, 0.5, 0.0, 2, 4000);
+  s.thermostat.kind = ThermostatKind::none;
+  s.run.dt = 0.002;
+  s.run.t_end = 2.0;
+  const double nu = std::sqrt(std::numbers::pi) * s.species[0].density * std::sqrt(2.0);  // at T = 1
+  s.shear_rate = nu;                                                                     // a* = 1
+  const RunResult result = run_scene(s, {});
+  const RunReport report = make_run_report(s, result, 0.0);
+  for (std::size_t k = 0; k < result.times.size(); ++k) {
+    ASSERT_TRUE(std::isfinite(report.temperature.mean[k]));
+    EXPECT_GT(report.temperature.mean[k], 0.0);
+    ASSERT_TRUE(std::isfinite(report.viscosity->pressure_xy.mean[k]));
+  }
+  EXPECT_LT(report.viscosity->pressure_xy.mean.back(), 0.0);  // momentum flows down the velocity gradient
+  for (const ReplicaSeries& r : result.replicas)
+    for (double p : r.momentum_relative) EXPECT_LT(p, 1e-13);
+}
+
+TEST(Relaxation, ReplacesTheExpectedFractionWithTheCoolingStateDistribution) {
+  // The effect alone: with zeta dt = ln(1 + loss / E) chosen so that p = 1 - exp(-zeta dt / 2) = 0.2, the
+  // number of replaced particles is binomial(N, p); the new velocities have the temperature of the gas.
+  Scene s = sheared_gas(0.6, 0.0, 0.0, 1, 20000);
+  Dsmc<HardSphere> plain(s, 0);
+  GasState state = plain.state();
+  const std::vector<Vec3> before = physical_velocities(state);
+  double e = 0.0;
+  state.species[0].for_each_velocity([&](const Vec3& c) { e += norm2(c); });
+  const double p = 0.2, zeta_dt = -2.0 * std::log1p(-p);
+  const RandomStream rng(5, 0);
+  const BgkRelaxation relax{SonineMaxwellian(theory::hcs_a2(0.6)), 1.0};
+  const double change = relax.apply(state, {0.01, e, std::expm1(zeta_dt) * e, &rng});
+  const std::vector<Vec3> after = physical_velocities(state);
+  std::size_t replaced = 0;
+  double e_after = 0.0;
+  for (std::size_t k = 0; k < after.size(); ++k) {
+    replaced += after[k].x != before[k].x;
+    e_after += norm2(after[k]);
+  }
+  const double n = static_cast<double>(after.size());
+  EXPECT_NEAR(static_cast<double>(replaced), p * n, confidence_lambda_p * std::sqrt(n * p * (1.0 - p)));
+  EXPECT_NEAR(e_after / (state.scale.u() * state.scale.u()) - e, change, 1e-9 * e);
+}
+
+TEST(Relaxation, DrawsTheFirstSonineCoolingState) {
+  // p -> 1: every particle replaced; T unchanged in mean and a2 equal to the first-Sonine HCS value.
+  const double alpha = 0.3;  // a2 = 0.089: resolvable with 2 x 10^5 particles
+  Scene s = sheared_gas(alpha, 0.0, 0.0, 1, 200000);
+  Dsmc<HardSphere> plain(s, 0);
+  GasState state = plain.state();
+  double e = 0.0;
+  state.species[0].for_each_velocity([&](const Vec3& c) { e += norm2(c); });
+  const RandomStream rng(6, 0);
+  const BgkRelaxation relax{SonineMaxwellian(theory::hcs_a2(alpha)), 1.0};
+  relax.apply(state, {0.01, e, 1e300, &rng});
+  // Sample moments of x = c^2: a2 = (3/5) m2 / m1^2 - 1 with m1 = <x>, m2 = <x^2>; its standard error by
+  // the delta method from the sample covariance of (x, x^2).
+  double m1 = 0.0, m2 = 0.0, m3 = 0.0, m4 = 0.0;
+  const double n = static_cast<double>(state.species[0].size());
+  state.species[0].for_each_velocity([&](const Vec3& c) {
+    const double x = norm2(c);
+    m1 += x / n;
+    m2 += x * x / n;
+    m3 += x * x * x / n;
+    m4 += x * x * x * x / n;
+  });
+  const double a2 = 0.6 * m2 / (m1 * m1) - 1.0;
+  const double g1 = -1.2 * m2 / (m1 * m1 * m1), g2 = 0.6 / (m1 * m1);
+  const double var_a2 = (g1 * g1 * (m2 - m1 * m1) + 2.0 * g1 * g2 * (m3 - m1 * m2) + g2 * g2 * (m4 - m2 * m2)) / n;
+  // The new energy has mean e exactly (v0 from e); its standard error is that of the mean of x.
+  EXPECT_NEAR(n * m1 / e, 1.0, confidence_lambda_p * std::sqrt((m2 - m1 * m1) / n) / m1);
+  EXPECT_NEAR(a2, theory::hcs_a2(alpha), confidence_lambda_p * std::sqrt(var_a2));
+}
