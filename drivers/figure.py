@@ -17,7 +17,9 @@ Plotted quantities (y): "temperature_ratio" (gamma = T_1/T_2), "temperature_rati
 "intruder_temperature_ratio" (T/T_B of a Gillespie intruder, 002 Figs. 3-4; "alpha" then sets
 intruder.restitution), "needle_correlation" (R of the 2D needle, 002 eq. 34 and Fig. 7),
 "viscosity_over_eta0" (eta/eta0 of one species under shear, 000 Fig. 6 and 003), "viscosity_kinetic_over_eta0",
-"viscosity_star" and "viscosity_kinetic_star" (eta* and eta^k* = nu eta / n T, 000 Figs. 10-12).
+"viscosity_star" and "viscosity_kinetic_star" (eta* and eta^k* = nu eta / n T, 000 Figs. 10-12),
+"viscosity_parts_over_eta0" (eta^k/eta0 and eta/eta0 together, 003). Under shear, "phi" also sets the
+densities to match phi and scales the time with the collision frequency (dense_shear_units).
 """
 import argparse
 import copy
@@ -75,9 +77,28 @@ def point_scene(bases, curve, x_name, x):
         scene.setdefault("collision", {})["restitution"] = float(x)
     elif x_name == "phi":
         scene.setdefault("collision", {})["packing_fraction"] = float(x)
+        if scene.get("shear", {}).get("rate", 0.0) != 0.0 and x > 0.0:
+            dense_shear_units(scene, float(x))
     else:
         sys.exit(f"figure.py: unknown swept parameter {x_name!r}; allowed: alpha, phi")
     return scene
+
+
+def dense_shear_units(scene, phi):
+    """Under shear an Enskog scene must have sum_i pi n_i sigma_i^3 / 6 = phi (granmc checks it). Sets the
+    densities to that (fractions and diameters kept), and scales the shear rate up and dt, t_end down by the
+    growth f = n chi(phi) / n_base of the collision frequency (chi of one species, Carnahan-Starling), so
+    every phi runs the same number of collisions at the same a / (collision frequency) as the dilute base."""
+    species = scene["species"]
+    n_base = sum(sp.get("density", 1.0) for sp in species)
+    moment = sum(sp.get("density", 1.0) / n_base * sp.get("diameter", 1.0) ** 3 for sp in species)
+    n = 6.0 * phi / (np.pi * moment)
+    for sp in species:
+        sp["density"] = sp.get("density", 1.0) / n_base * n
+    f = n * (1.0 - phi / 2.0) / (1.0 - phi) ** 3 / n_base
+    scene["shear"]["rate"] *= f
+    scene["run"]["dt"] /= f
+    scene["run"]["t_end"] /= f
 
 
 def point_name(curve_index, x_name, x):
@@ -126,6 +147,10 @@ def simulated(summary, y):
     if y == "needle_correlation":
         r = summary["intruder"]["R"]
         return [("", r["mean"], r["ci"])]
+    if y == "viscosity_parts_over_eta0":
+        v = summary["viscosity"]
+        return [(", kinetic", v["eta_kinetic_over_eta0"]["mean"], v["eta_kinetic_over_eta0"]["ci"]),
+                (", total", v["eta_over_eta0"]["mean"], v["eta_over_eta0"]["ci"])]
     if y.startswith("viscosity_"):
         key = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
                "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}[y]
@@ -154,6 +179,9 @@ def theoretical(th, y):
             out["Gaussian bath, eq. 22"] = [i["temperature_ratio_gaussian_bath"]]
     elif y == "needle_correlation":
         out["equilibrium, R = 1"] = [1.0]
+    elif y == "viscosity_parts_over_eta0" and "viscosity" in th:
+        v = th["viscosity"]["first_sonine"]
+        out["first Sonine"] = [v["eta_kinetic_over_eta0"], v["eta_over_eta0"]]
     elif y.startswith("viscosity_") and "viscosity" in th:
         key = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
                "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}[y]

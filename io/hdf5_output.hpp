@@ -20,6 +20,11 @@
 //   /counters/{candidates,majorant_updates,majorant_violations,rescales,histogram_samples} [R] uint64,
 //   /counters/pair_collisions [R x P] uint64 (P ordered species pairs), /counters/momentum_removed_relative [R]
 //   /temperature_ratio        scalar group with attributes mean, ci (two species only)
+//   /viscosity/               shear runs: attributes {eta_star, eta_kinetic_star, eta, eta_kinetic, eta_over_eta0,
+//                             eta_kinetic_over_eta0, drift}_{mean,ci}, steady, window_start;
+//                             {reduced_shear_rate, pressure_xy, pressure_kinetic_xy, eta_star,
+//                             eta_kinetic_star}_{mean,ci} [S]; pressure_kinetic, pressure_collisional [R x S x 6]
+//                             (P / n T: xx, yy, zz, xy, xz, yz)
 //   /theory/                  attributes a2_sonine, a2_model_error, a2_second_sonine, a3_second_sonine,
 //                             cooling_rate0, cooling_rate0_first_sonine, cooling_rate0_maxwell,
 //                             cooling_rate_model_error, chi, alpha, collision_frequency0;

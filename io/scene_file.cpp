@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -41,7 +42,7 @@ const std::vector<KnownTable>& known_tables() {
       {"[collision]", {"kernel", "lambda", "rate", "restitution", "packing_fraction"}},
       {"[thermostat]", {"kind", "zeta", "beta"}},
       {"[shear]", {"rate"}},
-      {"[relaxation]", {"enabled"}},
+      {"[relaxation]", {"enabled", "a2"}},
       {"[initial]", {"temperature"}},
       {"[intruder]", {"dimension", "mass", "restitution", "bath", "bath_a", "bath_density", "length", "inertia"}},
       {"[output]", {"histogram"}},
@@ -770,6 +771,18 @@ void Reader::read(const toml::table& root, Scene& scene) const {
 
   check_keys(shear);
   if (const auto a = number(shear, "rate", "a finite number")) scene.shear_rate = finite(shear.key("rate"), *a);
+  // Under shear the Enskog gas feels sigma and n beyond chi (the contact shift sigma_ij a and the transfer
+  // across sigma_ij, 000 eq. 18), so phi must be the packing fraction of the species as given.
+  if (const double phi = scene.collision.packing_fraction; scene.shear_rate != 0.0 && phi > 0.0) {
+    double from_species = 0.0;
+    for (const SpeciesConfig& sp : scene.species) from_species += std::numbers::pi / 6.0 * sp.density * std::pow(sp.diameter, 3);
+    if (!(std::fabs(from_species - phi) <= 1e-6 * phi))
+      fail("shear.rate", "with collision.packing_fraction = " + std::to_string(phi) +
+                             " needs species densities and diameters with sum_i pi n_i sigma_i^3 / 6 = phi (now " +
+                             std::to_string(from_species) + "): under shear the Enskog contact shift and collisional "
+                             "transfer depend on n and sigma themselves (000 eqs. 2, 18); for one species of "
+                             "diameter 1 set density = 6 phi / pi");
+  }
 
   check_keys(relaxation);
   scene.relaxation = boolean(relaxation, "enabled").value_or(false);
@@ -777,6 +790,12 @@ void Reader::read(const toml::table& root, Scene& scene) const {
     fail("relaxation.enabled",
          "true needs thermostat.kind = \"gaussian\" (the BGK-like relaxation to the HCS of "
          "003 acts together with the Gaussian thermostat); set [thermostat] kind = \"gaussian\"");
+  }
+  if (const auto a2 = number(relaxation, "a2", "a number in [-0.5, 0.5]")) {
+    if (!(std::fabs(*a2) <= 0.5)) fail("relaxation.a2", "must be in [-0.5, 0.5] (the Sonine-corrected Maxwellian "
+                                                        "is sampled from its positive part), got " + std::to_string(*a2));
+    if (!scene.relaxation) fail("relaxation.a2", "applies only with enabled = true");
+    scene.relaxation_a2 = *a2;
   }
 
   check_keys(initial);

@@ -93,7 +93,7 @@ kernel = "vhs"
 lambda = 0.5
 rate = 0
 restitution = [[0.9, 0.8], [0.8, 0.7]]
-packing_fraction = 0.25
+packing_fraction = 0.58250364  # pi (0.3 x 1.5^3 + 0.1 x 1^3) / 6: consistent with the species, as shear requires
 
 [thermostat]
 kind = "gaussian"
@@ -137,7 +137,7 @@ histogram = { shells = 64, radius = 8.5 }
   EXPECT_EQ(s.collision.restitution[0][1], 0.8);
   EXPECT_EQ(s.collision.restitution[1][0], 0.8);
   EXPECT_EQ(s.collision.restitution[1][1], 0.7);
-  EXPECT_EQ(s.collision.packing_fraction, 0.25);
+  EXPECT_EQ(s.collision.packing_fraction, 0.58250364);
   EXPECT_EQ(s.thermostat.kind, ThermostatKind::gaussian);
   EXPECT_FALSE(s.thermostat.zeta_is_cooling_rate);
   EXPECT_EQ(s.thermostat.zeta, 0.75);
@@ -521,10 +521,15 @@ TEST(SceneFile, ThermostatValues) {
   expect_rejected(kGas + "[thermostat]\nkind = \"gaussian\"\nzeta = inf\n", "thermostat.zeta", "inf is not finite");
   expect_rejected(kGas + "[relaxation]\nenabled = true\n", "relaxation.enabled",
                   "needs thermostat.kind = \"gaussian\"");
+  expect_rejected(kGas + "[relaxation]\na2 = 0.1\n", "relaxation.a2", "applies only with enabled = true");
+  expect_rejected(kGas + "[thermostat]\nkind = \"gaussian\"\n[relaxation]\nenabled = true\na2 = 0.7\n", "relaxation.a2",
+                  "must be in [-0.5, 0.5]");
 }
 
 TEST(SceneFile, ShearAndOutputValues) {
   expect_rejected(kGas + "[shear]\nrate = nan\n", "shear.rate", "nan is not finite");
+  expect_rejected(kGas + "[collision]\npacking_fraction = 0.3\n[shear]\nrate = 0.5\n", "shear.rate",
+                  "sum_i pi n_i sigma_i^3 / 6 = phi");
   expect_rejected(kGas + "[output]\nhistogram = { shells = 0 }\n", "output.histogram.shells", "0 is outside [1, ");
   expect_rejected(kGas + "[output]\nhistogram = { radius = 0 }\n", "output.histogram.radius", "0 is not > 0");
 }

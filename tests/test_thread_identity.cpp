@@ -42,7 +42,7 @@ Scene small_heated_scene(Method method) {
 /// Enskog uniform shear flow with 003's relaxation term (shift, pressure tensor, replacements).
 Scene small_sheared_scene() {
   Scene s = small_cooling_scene();
-  s.species[0].density = 0.4;
+  s.species[0].density = 6.0 * 0.2 / std::numbers::pi;  // phi = pi n sigma^3 / 6 = 0.2
   s.collision.packing_fraction = 0.2;
   s.thermostat.kind = ThermostatKind::gaussian;
   s.shear_rate = 0.5;

@@ -91,6 +91,7 @@ struct Scene {
   ThermostatConfig thermostat;
   double shear_rate = 0.0;             // a of u_x = a y (000 sec. 2)
   bool relaxation = false;             // BGK-like relaxation to the HCS (003)
+  std::optional<double> relaxation_a2; // a2 of its f^(0); default the first-Sonine HCS a2 (c0 / 2 of 003)
   double initial_temperature = 1.0;    // > 0, finite
   std::optional<IntruderConfig> intruder;
   HistogramConfig histogram;

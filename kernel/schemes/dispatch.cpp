@@ -63,7 +63,8 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options, Before... befo
   const ThermostatConfig& th = scene.thermostat;
   if (th.kind == ThermostatKind::gaussian && scene.relaxation)  // 003: thermostat, then the relaxation term
     return run(GaussianThermostat{th.zeta_is_cooling_rate, th.zeta},
-               BgkRelaxation{SonineMaxwellian(theory::hcs_a2(scene.collision.restitution[0][0])), scene.species[0].mass});
+               BgkRelaxation{SonineMaxwellian(scene.relaxation_a2.value_or(theory::hcs_a2(scene.collision.restitution[0][0]))),
+                             scene.species[0].mass});
   if (th.kind == ThermostatKind::gaussian) return run(GaussianThermostat{th.zeta_is_cooling_rate, th.zeta});
   if constexpr (white_noise)
     if (th.kind == ThermostatKind::white_noise) return run(WhiteNoise{th.beta, &scene});
