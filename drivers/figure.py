@@ -18,7 +18,8 @@ Plotted quantities (y): "temperature_ratio" (gamma = T_1/T_2), "temperature_rati
 intruder.restitution), "needle_correlation" (R of the 2D needle, 002 eq. 34 and Fig. 7),
 "viscosity_over_eta0" (eta/eta0 of one species under shear, 000 Fig. 6 and 003), "viscosity_kinetic_over_eta0",
 "viscosity_star" and "viscosity_kinetic_star" (eta* and eta^k* = nu eta / n T, 000 Figs. 10-12),
-"viscosity_parts_over_eta0" (eta^k/eta0 and eta/eta0 together, 003). Under shear, "phi" also sets the
+"viscosity_parts_over_eta0" (eta^k/eta0 and eta/eta0 together, 003), "viscosity_parts_star" (eta^k* and
+eta* together, 000 Figs. 10-11). Under shear, "phi" also sets the
 densities to match phi and scales the time with the collision frequency (dense_shear_units).
 """
 import argparse
@@ -147,10 +148,10 @@ def simulated(summary, y):
     if y == "needle_correlation":
         r = summary["intruder"]["R"]
         return [("", r["mean"], r["ci"])]
-    if y == "viscosity_parts_over_eta0":
+    if y in ("viscosity_parts_over_eta0", "viscosity_parts_star"):
         v = summary["viscosity"]
-        return [(", kinetic", v["eta_kinetic_over_eta0"]["mean"], v["eta_kinetic_over_eta0"]["ci"]),
-                (", total", v["eta_over_eta0"]["mean"], v["eta_over_eta0"]["ci"])]
+        k, t = ("eta_kinetic_over_eta0", "eta_over_eta0") if y.endswith("eta0") else ("eta_kinetic_star", "eta_star")
+        return [(", kinetic", v[k]["mean"], v[k]["ci"]), (", total", v[t]["mean"], v[t]["ci"])]
     if y.startswith("viscosity_"):
         key = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
                "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}[y]
@@ -179,9 +180,11 @@ def theoretical(th, y):
             out["Gaussian bath, eq. 22"] = [i["temperature_ratio_gaussian_bath"]]
     elif y == "needle_correlation":
         out["equilibrium, R = 1"] = [1.0]
-    elif y == "viscosity_parts_over_eta0" and "viscosity" in th:
+    elif y in ("viscosity_parts_over_eta0", "viscosity_parts_star") and "viscosity" in th:
         v = th["viscosity"]["first_sonine"]
-        out["first Sonine"] = [v["eta_kinetic_over_eta0"], v["eta_over_eta0"]]
+        k, t = ("eta_kinetic_over_eta0", "eta_over_eta0") if y.endswith("eta0") else ("eta_kinetic_star", "eta_star")
+        if k in v:
+            out["first Sonine"] = [v[k], v[t]]
     elif y.startswith("viscosity_") and "viscosity" in th:
         key = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
                "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}[y]

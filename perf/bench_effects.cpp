@@ -14,9 +14,11 @@
 //                        interleaved) with the plain scene's physics
 //   maxwell_kernel       kernel maxwell with collision.rate = 1/4 (the 001 form): dsmc<maxwell>
 //   hand_specialised     perf/hand_specialised_hcs.hpp on the plain scene's initial state
-// NOT MEASURED, because they do not exist yet: shear (the inertial force of a [shear] rate, 000 sec. 2)
-// and the BGK-like relaxation term of 003 ([relaxation]). dispatch.cpp refuses both scenes today; add a
-// scene and a row here for each when it lands in kernel/effects/.
+//   shear                shear.rate = 0.5, dilute: the inertial force in free flight (O(N) per step) and the
+//                        kinetic pressure only at samples (none here): dsmc<hard-sphere, lagrangian-shear>
+//   enskog_shear         shear.rate = 0.5 at phi = 0.2 (n = 6 phi / pi, as shear requires): the inertial force
+//                        and the Enskog shift with its shear-work and collisional-transfer tallies per collision
+//   relaxation           the gaussian_thermostat scene with 003's relaxation term (O(replaced) per step)
 //
 // Each benchmark iteration is one whole time step: advance_to(t + dt) with the scene's run.dt = 1 as an
 // upper bound and dt chosen before each step so that the step has kCandidateFraction N = N/10 candidates
@@ -64,7 +66,10 @@
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
+#include "kernel/collide/enskog_shear_shift.hpp"
+#include "kernel/effects/bgk_relaxation.hpp"
 #include "kernel/effects/gaussian_thermostat.hpp"
+#include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/effects/white_noise.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/dispatch.hpp"
@@ -135,6 +140,27 @@ Scene white_noise_scene() {
   Scene s = plain_scene();
   s.thermostat.kind = ThermostatKind::white_noise;
   s.thermostat.beta = balancing_beta();
+  return s;
+}
+
+constexpr double kShearRate = 0.5;  // a* = 0.2 at T = 1 (dilute)
+
+Scene shear_scene() {
+  Scene s = plain_scene();
+  s.shear_rate = kShearRate;
+  return s;
+}
+
+Scene enskog_shear_scene() {
+  Scene s = enskog_scene();
+  s.species[0].density = 6.0 * kPackingFraction / std::numbers::pi;  // phi = pi n sigma^3 / 6
+  s.shear_rate = kShearRate;
+  return s;
+}
+
+Scene relaxation_scene() {
+  Scene s = gaussian_scene();
+  s.relaxation = true;
   return s;
 }
 
@@ -250,6 +276,26 @@ const std::vector<SceneBench>& scene_benches() {
          return std::make_unique<DsmcGas<HardSphere, WhiteNoise>>(white_noise_scene(), [](const Scene& s) {
            return std::tuple{WhiteNoise{s.thermostat.beta, &s}};
          });
+       }},
+      {"shear", shear_scene,
+       [] {
+         return std::make_unique<DsmcGas<HardSphere, LagrangianShear>>(shear_scene(), [](const Scene& s) {
+           return std::tuple{LagrangianShear{s.shear_rate, &s}};
+         });
+       }},
+      {"enskog_shear", enskog_shear_scene,
+       [] {
+         return std::make_unique<DsmcGas<HardSphere, LagrangianShear, EnskogShearShift>>(
+             enskog_shear_scene(),
+             [](const Scene& s) { return std::tuple{LagrangianShear{s.shear_rate, &s}, EnskogShearShift{s.shear_rate}}; });
+       }},
+      {"relaxation", relaxation_scene,
+       [] {
+         return std::make_unique<DsmcGas<HardSphere, GaussianThermostat, BgkRelaxation>>(
+             relaxation_scene(), [](const Scene& s) {
+               return std::tuple{GaussianThermostat{true, s.thermostat.zeta},
+                                 BgkRelaxation{SonineMaxwellian(theory::hcs_a2(kRestitution)), 1.0}};
+             });
        }},
       {"two_species", two_species_scene,
        [] { return std::make_unique<DsmcGas<HardSphere>>(two_species_scene(), no_effects); }},

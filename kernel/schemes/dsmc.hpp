@@ -187,11 +187,18 @@ class Dsmc {
   }
 
   /// Runs the effects of one phase in pack order, each seeing the stored energy its predecessors left.
+  /// around_collisions effects run in both phases, with half the step each.
   template <StepPhase phase>
   void run_phase(StepContext ctx) noexcept {
     auto run_one = [&](auto& effect) {
-      if constexpr (std::decay_t<decltype(effect)>::phase == phase) {
+      constexpr StepPhase its = std::decay_t<decltype(effect)>::phase;
+      if constexpr (its == phase) {
         twice_energy_ += effect.apply(state_, ctx);
+        ctx.twice_energy = twice_energy_;
+      } else if constexpr (its == StepPhase::around_collisions && phase != StepPhase::in_collision) {
+        StepContext half = ctx;
+        half.dt = 0.5 * ctx.dt;
+        twice_energy_ += effect.apply(state_, half);
         ctx.twice_energy = twice_energy_;
       }
     };
