@@ -6,7 +6,7 @@ PYTHON ?= /usr/bin/python3
 JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
-.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-10 fig-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost accuracy-cost bench-effects
 
 all: build
@@ -36,7 +36,7 @@ hcs-alpha08: build
 
 # Paper 000's figures (drivers/figure.py; results/000_fig<k>/figure.png, table.md). Runs are cached per
 # point: a second call only redoes the theory and the plot. Runtimes in docs/validation.md.
-fig-000-1 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-10: fig-000-%: build
+fig-000-1 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12: fig-000-%: build
 	$(PYTHON) drivers/figure.py drivers/scenes/000_fig$*/figure.toml --granmc $(GRANMC)
 
 fig-000-2: build
@@ -45,7 +45,7 @@ fig-000-2: build
 	$(PYTHON) drivers/plot_delta.py results/000_fig2/fig2.h5 results/000_fig2/figure.png \
 	  --theory-json results/000_fig2/theory.json --table results/000_fig2/table.md
 
-figures-000: fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-10
+figures-000: fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12
 
 # Paper 003: eta^k/eta0 and eta/eta0 against phi in the modified shear flow (results/003_viscosity/).
 fig-003: build

@@ -11,7 +11,9 @@ same folder), the swept parameter, its simulated values, the curves (per curve: 
 reads the summary. Theory lines come from `granmc theory` on a fine grid. Output: OUT/figure.png,
 OUT/table.md (simulation with CI against theory) and OUT/figure.json (all numbers).
 
-Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.packing_fraction).
+Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.packing_fraction), and for two
+species "mu" (m_1/m_2), "omega" (sigma_1/sigma_2), "delta" (n_1/n_2, total density and particles kept).
+`reference_curve = LABEL` divides every other curve by that one at the same x (000 Figs. 7-9: eta(alpha)/eta(1)).
 Plotted quantities (y): "temperature_ratio" (gamma = T_1/T_2), "temperature_ratio_relative"
 (gamma(x)/gamma(x = 0) of the same curve, 000 Fig. 5), "cumulants" (c_i = 2 a2_i per species, 000 Fig. 1),
 "intruder_temperature_ratio" (T/T_B of a Gillespie intruder, 002 Figs. 3-4; "alpha" then sets
@@ -80,8 +82,20 @@ def point_scene(bases, curve, x_name, x):
         scene.setdefault("collision", {})["packing_fraction"] = float(x)
         if scene.get("shear", {}).get("rate", 0.0) != 0.0 and x > 0.0:
             dense_shear_units(scene, float(x))
+    elif x_name in ("mu", "omega", "delta") and len(scene.get("species", [])) == 2:
+        a, b = scene["species"]
+        if x_name == "mu":  # m_1 / m_2
+            a["mass"] = float(x) * b.get("mass", 1.0)
+        elif x_name == "omega":  # sigma_1 / sigma_2
+            a["diameter"] = float(x) * b.get("diameter", 1.0)
+        else:  # delta = n_1 / n_2 at the same total density and particle number
+            n, N = a.get("density", 1.0) + b.get("density", 1.0), a["particles"] + b["particles"]
+            a["density"], b["density"] = n * x / (1.0 + x), n / (1.0 + x)
+            a["particles"] = int(round(N * x / (1.0 + x)))
+            b["particles"] = N - a["particles"]
     else:
-        sys.exit(f"figure.py: unknown swept parameter {x_name!r}; allowed: alpha, phi")
+        sys.exit(f"figure.py: unknown swept parameter {x_name!r}; allowed: alpha, phi, and for two species mu, "
+                 "omega, delta")
     return scene
 
 
@@ -248,6 +262,8 @@ def main():
 
     if y == "temperature_ratio_relative":
         normalise(results)
+    if "reference_curve" in fig:
+        results = relative_to_curve(results, fig["reference_curve"])
     with open(os.path.join(out, "figure.json"), "w") as f:
         json.dump({"figure": fig, "curves": results}, f, indent=1)
     write_table(fig, results, os.path.join(out, "table.md"))
@@ -269,6 +285,24 @@ def normalise(results):
         if c["theory"]:
             ref = c["theory"][0]
             c["theory"] = [{k: [v[0] / ref[k][0]] for k, v in line.items()} for line in c["theory"]]
+
+
+def relative_to_curve(results, label):
+    """Every other curve divided, point by point and line by line, by the curve `label` at the same x (e.g.
+    eta(alpha)/eta(1) of 000 Figs. 7-9); CIs of the independent runs combined. The reference curve is dropped."""
+    ref = next(c for c in results if c["label"] == label)
+    out = []
+    for c in results:
+        if c is ref:
+            continue
+        for pt, r in zip(c["points"], ref["points"]):
+            pt["sim"] = [(suf, m / rm, (m / rm) * np.hypot(e / m, re / rm))
+                         for (suf, m, e), (_, rm, re) in zip(pt["sim"], r["sim"])]
+            pt["theory"] = {k: [v / w for v, w in zip(vals, r["theory"][k])] for k, vals in pt["theory"].items()}
+        c["theory"] = [{k: [v / w for v, w in zip(vals, rl[k])] for k, vals in line.items()}
+                       for line, rl in zip(c["theory"], ref["theory"])]
+        out.append(c)
+    return out
 
 
 def write_table(fig, results, path):
