@@ -1,4 +1,4 @@
-// A cooling run in which T falls by more than 30 decades still gives the right a2: the stored
+// A cooling run in which T falls by more than 40 decades still gives the right a2: the stored
 // velocities are rescaled and the centre-of-mass velocity removed as the gas cools (DESIGN.md,
 // "Numerics that must not break"), so the scaled state late in the run is the same homogeneous cooling
 // state as early in the run.
@@ -21,7 +21,7 @@ Scene long_cooling_scene() {
   Scene s;
   s.run.seed = 31;
   s.run.replicas = 8;
-  s.run.t_end = 1e17;  // Haff: T(t_end) / T(0) ~ 1e-33
+  s.run.t_end = 1e21;  // Haff: T(t_end) / T(0) ~ 1e-41 (issue 7: a cooling run over 40 decades)
   s.run.dt = 0.02;     // about 0.14 mean free times, kept so by the thermal scaling
   s.run.dt_scaling = DtScaling::thermal;
   s.run.samples = 80;
@@ -60,10 +60,10 @@ RunResult* LongCooling::result_ = nullptr;
 
 }  // namespace
 
-TEST_F(LongCooling, TemperatureFallsMoreThanThirtyDecadesAndStaysFinite) {
+TEST_F(LongCooling, TemperatureFallsMoreThanFortyDecadesAndStaysFinite) {
   for (const ReplicaSeries& rep : result_->replicas) {
     const double decades = (rep.log_temperature.front() - rep.log_temperature.back()) / std::log(10.0);
-    EXPECT_GT(decades, 30.0);
+    EXPECT_GT(decades, 40.0);
     EXPECT_GT(rep.rescales, 100u);
     for (std::size_t k = 0; k < result_->times.size(); ++k) {
       ASSERT_TRUE(std::isfinite(rep.log_temperature[k]));
@@ -80,12 +80,12 @@ TEST_F(LongCooling, TemperatureFallsMoreThanThirtyDecadesAndStaysFinite) {
 
 TEST_F(LongCooling, LateScaledStateEqualsEarlyScaledState) {
   const std::vector<double> early = a2_between_decades(*result_, 2.0, 6.0);
-  const std::vector<double> late = a2_between_decades(*result_, 29.0, 34.0);
+  const std::vector<double> late = a2_between_decades(*result_, 35.0, 40.0);
   std::vector<double> difference;
   for (std::size_t r = 0; r < early.size(); ++r) difference.push_back(late[r] - early[r]);
   const MeanCI d = replica_mean(difference);
   const MeanCI early_a2 = replica_mean(early);
-  std::printf("[ measured ] a2 after 2-6 decades %.4f +- %.4f, after 29-34 decades %.4f +- %.4f, difference %.4f +- %.4f\n",
+  std::printf("[ measured ] a2 after 2-6 decades %.4f +- %.4f, after 35-40 decades %.4f +- %.4f, difference %.4f +- %.4f\n",
               early_a2.mean, early_a2.ci, replica_mean(late).mean, replica_mean(late).ci, d.mean, d.ci);
   EXPECT_NEAR(d.mean, 0.0, d.ci) << "a2 late - a2 early";
   const MeanCI late_a2 = replica_mean(late);
