@@ -6,7 +6,7 @@ PYTHON ?= /usr/bin/python3
 JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
-.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost accuracy-cost bench-effects
 
 all: build
@@ -50,6 +50,10 @@ figures-000: fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000
 # Paper 003: eta^k/eta0 and eta/eta0 against phi in the modified shear flow (results/003_viscosity/).
 fig-003: build
 	$(PYTHON) drivers/figure.py drivers/scenes/003_viscosity/figure.toml --granmc $(GRANMC)
+
+# 003's relaxation term: how the choice of f^(0) moves eta (results/003_f0_bias/table.md, about 4 min).
+relaxation-bias-003: build
+	$(PYTHON) drivers/relaxation_bias.py --granmc $(GRANMC)
 
 # Paper 002's figures (1D Gillespie intruder).
 fig-002-3 fig-002-4 fig-002-5: fig-002-%: build

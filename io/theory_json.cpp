@@ -5,6 +5,7 @@
 #include "kernel/theory/intruder.hpp"
 #include "kernel/theory/mixture_viscosity.hpp"
 #include "kernel/theory/sonine.hpp"
+#include "kernel/theory/sonine_hcs.hpp"
 #include "kernel/theory/viscosity.hpp"
 #include "kernel/theory/white_noise.hpp"
 
@@ -130,6 +131,10 @@ nlohmann::json scene_theory_json(const Scene& scene) {
                               {"eta_kinetic_star", theory::reduced_viscosity_one_species(s.kinetic)}};
       };
       v["first_sonine"] = block(reference);
+      if (hcs)  // the f^(0) of the relaxation term: first-Sonine a2 by default; the second-Sonine HCS for scale
+        v["relaxation_f0"] = {{"a2", scene.relaxation_a2.value_or(theory::hcs_a2(alpha))},
+                              {"hcs_a2_first_sonine", theory::hcs_a2(alpha)},
+                              {"hcs_a2_second_sonine", theory::hcs_second_sonine(alpha).a2}};
       v["first_sonine_cooling_state"] = block(theory::ViscosityReference::cooling);
       v["first_sonine_gaussian_thermostat"] = block(theory::ViscosityReference::gaussian_thermostat);
       // The elastic dilute gas: the converged Sonine series gives 1.016 eta0 (003: the first Sonine value

@@ -3,7 +3,8 @@
 //
 // A step of length dt runs the free-flight effects the scene named, then the collision stage for every
 // ordered species pair (i, j) with 1/2 N_i omega_max^(ij) dt candidates (the fractional part carried to
-// the next step), then the post-collision effects. `Kernel` is the collision-rate evaluator
+// the next step), then the post-collision effects; an around_collisions effect (the shear map) acts half
+// before and half after the collision stage. `Kernel` is the collision-rate evaluator
 // (collide/), `Effects` the evaluator structs of effects/ (effects/step_context.hpp says what they
 // look like); an effect the scene does not name is not in the pack and costs nothing. One file,
 // schemes/dispatch.cpp, chooses the instantiation.
@@ -20,11 +21,11 @@
 #include <type_traits>
 #include <vector>
 
+#include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/core/sym_tensor.hpp"
-#include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/effects/step_context.hpp"
 #include "kernel/observe/gas_observation.hpp"
