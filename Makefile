@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 
 .PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
-	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost accuracy-cost bench-effects
+	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost accuracy-cost bench-effects stability
 
 all: build
 
@@ -116,3 +116,9 @@ bench-effects: build
 
 clean:
 	rm -rf $(BUILD)
+
+# Issue 7's stability study: the fast hard cases (ctest -L stability), then the long versions at full size
+# (drivers/scenes/stability/, checks and table in results/stability/table.md; about 10 min).
+stability: build
+	cd $(BUILD) && ctest -L stability --output-on-failure
+	$(PYTHON) drivers/stability.py --granmc $(GRANMC)
