@@ -339,7 +339,7 @@ def plot(fig, results, path):
     import matplotlib.pyplot as plt
 
     styles = {"equilibrium, R = 1": ":", "Maxwellian": ":", "first Sonine": "-", "second Sonine": "--", "exact": "-",
-              "Gaussian bath, eq. 22": "--"}
+              "Gaussian bath, eq. 22": "--", "first Sonine, HSS": "-", "first Sonine, HCS": "--"}
     markers = ["o", "s", "^", "D", "v"]
     f, ax = plt.subplots(figsize=(6.4, 4.8))
     series = 0
