@@ -5,8 +5,9 @@ BUILD  ?= build
 PYTHON ?= /usr/bin/python3
 JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
+MPI_BUILD ?= build-mpi
 
-.PHONY: all setup configure build run test bench clean hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost accuracy-cost bench-effects stability
 
 all: build
@@ -104,8 +105,28 @@ tails-001-full: build
 	$(TAILS) drivers/scenes/001_tails/example8.toml
 	$(TAILS) drivers/scenes/001_tails/example9.toml
 
+# The suite, then the MPI test in $(MPI_BUILD) (replicas over ranks against one process, docs/scaling.md):
+# installs OpenMPI if missing and builds only granmc and test_mpi there.
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure
+	$(MAKE) --no-print-directory mpi-test
+
+# Replicas over MPI ranks (docs/scaling.md), built apart in $(MPI_BUILD) with GRANMC_MPI=ON: `make mpi`, then
+# `mpirun -np R $(MPI_BUILD)/bin/granmc run SCENE ...`. The default set-up does not install MPI.
+mpi-setup:
+	@bash scripts/setup-deps.sh --mpi
+
+$(MPI_BUILD)/CMakeCache.txt: | mpi-setup
+	cmake -S . -B $(MPI_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRANMC_MPI=ON
+
+mpi-configure: mpi-setup $(MPI_BUILD)/CMakeCache.txt
+
+mpi: mpi-configure
+	cmake --build $(MPI_BUILD) -j $(JOBS)
+
+mpi-test: mpi-configure
+	cmake --build $(MPI_BUILD) -j $(JOBS) --target granmc test_mpi
+	ctest --test-dir $(MPI_BUILD) -L mpi --output-on-failure
 
 bench: build
 	cmake --build $(BUILD) --target bench
@@ -115,7 +136,7 @@ bench-effects: build
 	cmake --build $(BUILD) --target bench-effects
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(MPI_BUILD)
 
 # Issue 7's stability study: the fast hard cases (ctest -L stability), then the long versions at full size
 # (drivers/scenes/stability/, checks and table in results/stability/table.md; about 10 min).

@@ -23,6 +23,9 @@
 #include "kernel/core/species_store.hpp"
 #include "kernel/schemes/dispatch.hpp"
 #include "kernel/schemes/run_plan.hpp"
+#ifdef GRANMC_HAVE_MPI
+#include "drivers/mpi_replicas.hpp"
+#endif
 
 namespace granmc {
 
@@ -38,12 +41,38 @@ struct RunArgs {
   bool explain = false;
 };
 
+/// This process among the MPI ranks (docs/scaling.md): it runs the replicas r with r % size == rank, and
+/// rank 0 alone prints and writes. Without MPI (GRANMC_MPI=OFF), the one process: rank 0 of 1.
+struct Place {
+  int rank = 0;
+  int size = 1;
+};
+
+Place place() {
+#ifdef GRANMC_HAVE_MPI
+  const mpi::World w = mpi::world();
+  return {w.rank, w.size};
+#else
+  return {};
+#endif
+}
+
+/// How many of `replicas` replicas this process runs.
+int own_replicas(int replicas, Place at) {
+  return replicas > at.rank ? (replicas - at.rank + at.size - 1) / at.size : 0;
+}
+
 /// Candidates per second per thread on this machine's kind (docs/performance.md, N = 10^5 to 10^7),
 /// for the time estimate of --explain.
 constexpr double measured_candidates_per_second = 1.0e7;
 
-int explain_command(const Scene& scene, const RunArgs& args) {
+int explain_command(const Scene& full_scene, const RunArgs& args) {
+  const Place at = place();
+  if (at.rank != 0) return exit_ok;
   const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
+  Scene rank_share = full_scene;  // over several ranks: rank 0's replicas (the others run as many or one fewer)
+  rank_share.run.replicas = own_replicas(full_scene.run.replicas, at);
+  const Scene& scene = at.size > 1 ? rank_share : full_scene;
   const RunPlan plan = plan_run(scene, threads);
   std::printf("scene        %s\n", args.scene.c_str());
   std::printf("kernel       %s\n", plan.instantiation.c_str());
@@ -51,6 +80,10 @@ int explain_command(const Scene& scene, const RunArgs& args) {
   std::string absent;
   for (const std::string& a : plan.absent) absent += (absent.empty() ? "" : ", ") + a;
   if (!absent.empty()) std::printf("not compiled %s (the scene does not name them)\n", absent.c_str());
+  if (at.size > 1)
+    std::printf("ranks        %d MPI ranks, replica r on rank r mod %d; rank 0 runs %d of the %d replicas, "
+                "memory and work below are rank 0's\n",
+                at.size, at.size, scene.run.replicas, full_scene.run.replicas);
   if (!scene.intruder)
     std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
               static_cast<double>(plan.particle_bytes) / 1e6, plan.replicas_in_flight,
@@ -65,20 +98,64 @@ int explain_command(const Scene& scene, const RunArgs& args) {
   return exit_ok;
 }
 
-/// Loads and checks a scene; on a bad scene prints one message and returns nothing.
-std::optional<Scene> checked_scene(const std::string& path, std::optional<std::uint64_t> seed) {
+/// Loads and checks a scene; on a bad scene sets `message` and returns nothing.
+std::optional<Scene> load_checked_scene(const std::string& path, std::optional<std::uint64_t> seed,
+                                        std::string& message) {
   try {
     Scene scene = load_scene(path);
     if (seed) scene.run.seed = *seed;
     if (const std::string why = unsupported_reason(scene); !why.empty()) {
-      std::cerr << "granmc: " << path << ": " << why << "\n";
+      message = "granmc: " + path + ": " + why + "\n";
       return std::nullopt;
     }
     return scene;
   } catch (const SceneError& e) {
-    std::cerr << "granmc: " << e.what() << "\n";
+    message = std::string("granmc: ") + e.what() + "\n";
     return std::nullopt;
   }
+}
+
+/// Loads and checks a scene; on a bad scene prints one message and returns nothing. With MPI every rank
+/// reads the scene and all go on only if all could (collective): a rank that stopped here would leave
+/// the others waiting in the gather. The message comes from rank 0, or from the ranks that failed when
+/// rank 0 did not.
+std::optional<Scene> checked_scene(const std::string& path, std::optional<std::uint64_t> seed) {
+  std::string message;
+  std::optional<Scene> scene = load_checked_scene(path, seed, message);
+#ifdef GRANMC_HAVE_MPI
+  const bool root_loaded = mpi::root_ok(scene.has_value());
+  if (!scene && (place().rank == 0 || root_loaded)) std::cerr << message;
+  if (!mpi::all_ok(scene.has_value())) return std::nullopt;
+#else
+  if (!scene) std::cerr << message;
+#endif
+  return scene;
+}
+
+/// The run's result with every replica: the result itself in one process; over several MPI ranks,
+/// rank 0's gathered copy (drivers/mpi_replicas.hpp), the other ranks' without replicas.
+RunResult completed(RunResult local) {
+#ifdef GRANMC_HAVE_MPI
+  return mpi::gather_replicas(std::move(local));
+#else
+  return local;
+#endif
+}
+
+/// A failure during the run: one message and exit status 1. Over several MPI ranks the message names the
+/// rank and every rank is ended (MPI_Abort), so that none waits for it.
+int run_failure(const std::exception& e) {
+  const Place at = place();
+  if (at.size == 1) {
+    std::cerr << "granmc: run failed: " << e.what() << "\n";
+    return exit_run_failure;
+  }
+  std::cerr << "granmc: run failed on MPI rank " << at.rank << " of " << at.size << ": " << e.what()
+            << "\n(ending all ranks)\n" << std::flush;
+#ifdef GRANMC_HAVE_MPI
+  mpi::abort_all(exit_run_failure);
+#endif
+  return exit_run_failure;
 }
 
 std::string default_output(const std::string& scene_path) {
@@ -92,17 +169,22 @@ int run_command(const RunArgs& args) {
   if (args.explain) return explain_command(scene, args);
   const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
 
-  const bool show_progress = !args.quiet && isatty(STDERR_FILENO);
-  ProgressLine progress(static_cast<std::uint64_t>(scene.run.replicas) * (scene.run.samples + 1), show_progress);
+  const Place at = place();
+  const bool show_progress = at.rank == 0 && !args.quiet && isatty(STDERR_FILENO);
+  ProgressLine progress(static_cast<std::uint64_t>(own_replicas(scene.run.replicas, at)) * (scene.run.samples + 1),
+                        show_progress);
   RunOptions options;
   options.threads = args.threads;
   options.on_sample = [&progress] { progress.tick(); };
+  options.replica_offset = at.rank;
+  options.replica_stride = at.size;
 
   try {
     const auto start = std::chrono::steady_clock::now();
-    const RunResult result = run_scene(scene, options);
+    const RunResult result = completed(run_scene(scene, options));
     progress.finish();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (at.rank != 0) return exit_ok;  // rank 0 alone reports and writes
     const RunReport report = make_run_report(scene, result, wall);
     for (const std::string& file : {out, args.summary}) {
       const auto dir = std::filesystem::path(file).parent_path();
@@ -110,21 +192,25 @@ int run_command(const RunArgs& args) {
     }
     write_hdf5(out, scene, result, report);
     if (!args.summary.empty()) write_summary(args.summary, summary_json(scene, result, report));
-    if (!args.quiet) {
+    if (!args.quiet && at.size == 1) {
       std::printf("granmc %s: %s, %d replicas, %.1f s on %d threads -> %s%s%s\n", version, args.scene.c_str(),
                   scene.run.replicas, wall, result.threads, out.c_str(), args.summary.empty() ? "" : ", ",
                   args.summary.c_str());
+    } else if (!args.quiet) {
+      std::printf("granmc %s: %s, %d replicas, %.1f s on %d MPI ranks (rank 0: %d threads) -> %s%s%s\n", version,
+                  args.scene.c_str(), scene.run.replicas, wall, at.size, result.threads, out.c_str(),
+                  args.summary.empty() ? "" : ", ", args.summary.c_str());
     }
     return exit_ok;
   } catch (const std::exception& e) {
-    std::cerr << "granmc: run failed: " << e.what() << "\n";
-    return exit_run_failure;
+    return run_failure(e);
   }
 }
 
 int theory_command(const std::string& path) {
   const std::optional<Scene> scene = checked_scene(path, std::nullopt);
   if (!scene) return exit_bad_input;
+  if (place().rank != 0) return exit_ok;
   std::cout << scene_theory_json(*scene).dump(2) << "\n";
   return exit_ok;
 }
@@ -151,16 +237,21 @@ int cli_main(int argc, char** argv) {
   CLI::App* theory_cmd = app.add_subcommand("theory", "Print the theory predictions that apply to a scene (JSON)");
   theory_cmd->add_option("scene", theory_scene, "Scene file (TOML)")->required();
 
+  // Help, version and parse errors: printed by rank 0 only (every rank parses the same arguments).
+  std::ostream quiet(nullptr);
+  const bool root = place().rank == 0;
+  std::ostream& out = root ? std::cout : quiet;
+  std::ostream& err = root ? std::cerr : quiet;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return app.exit(e, out, err);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return app.exit(e, out, err);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return app.exit(e, out, err);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    app.exit(e, out, err);
     return exit_bad_input;
   }
   if (*run_cmd) return run_command(run);

@@ -1,7 +1,18 @@
 #!/usr/bin/env bash
 # Installs the Debian packages granmc needs, skipping those already present.
 # Used by `make run`, `make test` and `make bench`; safe to run again (it does nothing when all are there).
+# MPI (OpenMPI, for replicas over ranks, docs/scaling.md) is opt-in: `scripts/setup-deps.sh --mpi` or
+# GRANMC_MPI=1 (also ON) adds openmpi-bin and libopenmpi-dev; `make mpi` and `make test` ask for it.
 set -euo pipefail
+
+with_mpi=0
+case "${GRANMC_MPI:-0}" in 1|ON|on|On|YES|yes|TRUE|true) with_mpi=1 ;; esac
+for arg in "$@"; do
+  case "$arg" in
+    --mpi) with_mpi=1 ;;
+    *) echo "setup: unknown argument $arg (only --mpi)" >&2; exit 2 ;;
+  esac
+done
 
 packages=(
   cmake g++ make libgomp1
@@ -9,7 +20,7 @@ packages=(
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-h5py
 )
-if [ "${GRANMC_MPI:-OFF}" = "ON" ]; then packages+=(openmpi-bin libopenmpi-dev); fi
+if [ "$with_mpi" = 1 ]; then packages+=(openmpi-bin libopenmpi-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the replicas of a scene in parallel (OpenMP), each from its own random stream, and collects
-// their series in replica order: the result is the same for any thread count.
+// their series in replica order: the result is the same for any thread count. With RunOptions'
+// replica_offset and replica_stride it runs only its share (MPI ranks) and leaves the rest empty.
 #include <cstdint>
 #include <exception>
 #include <vector>
@@ -25,8 +26,11 @@ RunResult run_replicas(const Scene& scene, const RunOptions& options, RunOne&& r
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   result.threads = threads;
   std::exception_ptr failure;
+  const int stride = options.replica_stride;  // own replicas: offset, offset + stride, ... (run_options.hpp)
+  const int own = n > options.replica_offset ? (n - options.replica_offset + stride - 1) / stride : 0;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (int r = 0; r < n; ++r) {
+  for (int k = 0; k < own; ++k) {
+    const int r = options.replica_offset + k * stride;
     try {
       result.replicas[static_cast<std::size_t>(r)] = run_one(static_cast<std::uint64_t>(r), result.times);
     } catch (...) {

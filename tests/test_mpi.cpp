@@ -1,0 +1,430 @@
+// Replicas over MPI ranks (GRANMC_MPI=ON, docs/scaling.md): the byte round trip of every ReplicaSeries
+// field, and `mpirun -np R granmc run` against one process on 1 and 2 threads for small scenes (cooling,
+// shear with the Gaussian thermostat, the 1D intruder): every dataset and attribute of the HDF5 file
+// bit-identical (wall_seconds and threads aside), the JSON summaries equal, nothing written by the other
+// ranks, and one message from a bad scene. The test launches mpirun itself; CTest sets
+// OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) for it (tests/CMakeLists.txt), as OpenMPI refuses root without them.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "drivers/mpi_replicas.hpp"
+
+namespace granmc {
+namespace {
+
+namespace fs = std::filesystem;
+
+// --- the round trip ---
+
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+template <class T>
+bool same_bytes(const T& a, const T& b) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+/// Every field of two replicas' series, bit for bit (a NaN equals itself, -0 differs from +0).
+void expect_same(const ReplicaSeries& a, const ReplicaSeries& b) {
+  EXPECT_TRUE(same_bytes(a.temperature, b.temperature));
+  EXPECT_TRUE(same_bytes(a.log_temperature, b.log_temperature));
+  ASSERT_EQ(a.species.size(), b.species.size());
+  for (std::size_t i = 0; i < a.species.size(); ++i) {
+    EXPECT_TRUE(same_bytes(a.species[i].temperature, b.species[i].temperature)) << i;
+    EXPECT_TRUE(same_bytes(a.species[i].log_temperature, b.species[i].log_temperature)) << i;
+    EXPECT_TRUE(same_bytes(a.species[i].a2, b.species[i].a2)) << i;
+    EXPECT_TRUE(same_bytes(a.species[i].a3, b.species[i].a3)) << i;
+    EXPECT_TRUE(same_bytes(a.species[i].speed_counts, b.species[i].speed_counts)) << i;
+  }
+  EXPECT_TRUE(same_bytes(a.momentum, b.momentum));
+  EXPECT_TRUE(same_bytes(a.momentum_relative, b.momentum_relative));
+  EXPECT_TRUE(same_bytes(a.collisions, b.collisions));
+  EXPECT_TRUE(same_bytes(a.pair_collisions, b.pair_collisions));
+  EXPECT_EQ(a.histogram_samples, b.histogram_samples);
+  EXPECT_EQ(a.candidates, b.candidates);
+  EXPECT_EQ(a.majorant_updates, b.majorant_updates);
+  EXPECT_EQ(a.majorant_violations, b.majorant_violations);
+  EXPECT_TRUE(same_bytes(a.majorant_growth, b.majorant_growth));
+  EXPECT_TRUE(same_bytes(a.pressure_kinetic, b.pressure_kinetic));
+  EXPECT_TRUE(same_bytes(a.pressure_collisional, b.pressure_collisional));
+  EXPECT_TRUE(same_bytes(a.reduced_shear_rate, b.reduced_shear_rate));
+  EXPECT_EQ(a.rescales, b.rescales);
+  EXPECT_TRUE(same_bytes(a.momentum_removed_relative, b.momentum_removed_relative));
+  ASSERT_EQ(a.intruder.has_value(), b.intruder.has_value());
+  if (!a.intruder) return;
+  const IntruderSeries &x = *a.intruder, &y = *b.intruder;
+  EXPECT_TRUE(same_bytes(x.velocity, y.velocity));
+  EXPECT_TRUE(same_bytes(x.speed_counts, y.speed_counts));
+  EXPECT_EQ(x.sampling_attempts, y.sampling_attempts);
+  EXPECT_TRUE(same_bytes(x.velocity_y, y.velocity_y));
+  EXPECT_TRUE(same_bytes(x.angular_velocity, y.angular_velocity));
+  EXPECT_TRUE(same_bytes(x.angular_counts, y.angular_counts));
+  EXPECT_EQ(x.newton_iterations, y.newton_iterations);
+  EXPECT_EQ(x.bisection_fallbacks, y.bisection_fallbacks);
+}
+
+/// Distinct values in every field; `r` varies them between replicas. Odd doubles included.
+ReplicaSeries filled_replica(int r, bool intruder) {
+  double x = 1.0 + r;
+  auto doubles = [&](std::size_t n) {
+    std::vector<double> v(n);
+    for (double& d : v) d = (x += 0.37);
+    return v;
+  };
+  ReplicaSeries s;
+  s.temperature = {1.0,
+                   std::numeric_limits<double>::quiet_NaN(),
+                   -0.0,
+                   std::numeric_limits<double>::infinity(),
+                   std::numeric_limits<double>::denorm_min(),
+                   0.1 * r};
+  s.log_temperature = doubles(6);
+  for (int i = 0; i < 2; ++i) s.species.push_back({doubles(6), doubles(6), doubles(6), doubles(6), doubles(11)});
+  s.momentum = {{1.0, 2.0, 3.0 + r}, {-4.0, 5.5, -0.0}};
+  s.momentum_relative = doubles(6);
+  s.collisions = doubles(6);
+  s.pair_collisions = {7, 8, 9, (std::uint64_t{1} << 63) + static_cast<std::uint64_t>(r)};
+  s.histogram_samples = 11 + r;
+  s.candidates = 12 + r;
+  s.majorant_updates = 13;
+  s.majorant_violations = 14;
+  s.majorant_growth = doubles(4);
+  s.pressure_kinetic = {{1, 2, 3, 4, 5, 6.0 + r}, {-1, -2, -3, -4, -5, -6}};
+  s.pressure_collisional = {{0.1, 0.2, 0.3, 0.4, 0.5, 0.6}, {}};
+  s.reduced_shear_rate = doubles(2);
+  s.rescales = 15;
+  s.momentum_removed_relative = 1e-300 * (r + 1);
+  if (intruder) {
+    IntruderSeries in;
+    in.velocity = doubles(6);
+    in.speed_counts = doubles(5);
+    in.sampling_attempts = 16;
+    in.velocity_y = doubles(6);
+    in.angular_velocity = doubles(6);
+    in.angular_counts = doubles(3);
+    in.newton_iterations = 17;
+    in.bisection_fallbacks = 18;
+    s.intruder = in;
+  }
+  return s;
+}
+
+TEST(MpiReplicas, RoundTripKeepsEveryFieldBitForBit) {
+  std::vector<ReplicaSeries> all;
+  for (int r = 0; r < 7; ++r) all.push_back(filled_replica(r, r % 2 == 1));
+  all.push_back(ReplicaSeries{});  // empty vectors, no intruder
+  for (int stride : {1, 2, 3, 8, 11}) {
+    for (int offset = 0; offset < stride; ++offset) {
+      const std::vector<std::byte> bytes = mpi::serialise_replicas(all, offset, stride);
+      std::vector<ReplicaSeries> back(all.size());
+      mpi::deserialise_replicas(bytes, back, offset, stride);
+      for (std::size_t r = 0; r < all.size(); ++r) {
+        SCOPED_TRACE("stride " + std::to_string(stride) + " offset " + std::to_string(offset) + " replica " +
+                     std::to_string(r));
+        expect_same(static_cast<int>(r) % stride == offset ? all[r] : ReplicaSeries{}, back[r]);
+      }
+    }
+  }
+}
+
+TEST(MpiReplicas, MalformedMessagesThrow) {
+  const std::vector<ReplicaSeries> all{filled_replica(0, true), filled_replica(1, false)};
+  std::vector<std::byte> bytes = mpi::serialise_replicas(all, 0, 1);
+  std::vector<ReplicaSeries> back(2);
+  EXPECT_THROW(mpi::deserialise_replicas(std::span(bytes).first(bytes.size() - 1), back, 0, 1), std::runtime_error);
+  std::vector<std::byte> longer = bytes;
+  longer.push_back(std::byte{0});
+  EXPECT_THROW(mpi::deserialise_replicas(longer, back, 0, 1), std::runtime_error);
+  std::vector<ReplicaSeries> three(3);  // expects 3 replicas, the message has 2
+  EXPECT_THROW(mpi::deserialise_replicas(bytes, three, 0, 1), std::runtime_error);
+}
+
+// --- granmc under mpirun against one process ---
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+class MpiRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("granmc_mpi_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  /// Runs `prefix granmc args` in the test directory.
+  Outcome run(const std::string& prefix, const std::string& args) {
+    const std::string cmd =
+        "cd '" + dir_.string() + "' && " + prefix + " '" GRANMC_EXECUTABLE "' " + args + " >stdout.txt 2>stderr.txt";
+    const int raw = std::system(cmd.c_str());
+    Outcome o;
+    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    o.out = slurp(dir_ / "stdout.txt");
+    o.err = slurp(dir_ / "stderr.txt");
+    fs::remove(dir_ / "stdout.txt");
+    fs::remove(dir_ / "stderr.txt");
+    return o;
+  }
+
+  static std::string mpirun(int ranks) {
+    return std::string("'" GRANMC_MPIEXEC "' -np ") + std::to_string(ranks) + " --oversubscribe";
+  }
+
+  void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name, std::ios::binary) << text; }
+
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  struct Way {
+    std::string name, prefix, threads;
+  };
+  /// One process on 1 and 2 threads (granmc started without mpirun: MPI's singleton, one rank), then
+  /// mpirun with 2 ranks and, unless `few`, with 2 ranks of 2 threads, 3 ranks (5 replicas: 2, 2, 1) and
+  /// 6 ranks (rank 5 runs no replica).
+  static std::vector<Way> ways(bool few) {
+    std::vector<Way> w{{"one process, 1 thread", "", "1"},
+                       {"one process, 2 threads", "", "2"},
+                       {"mpirun -np 2, 1 thread", mpirun(2), "1"}};
+    if (few) return w;
+    w.insert(w.end(), {{"mpirun -np 2, 2 threads", mpirun(2), "2"},
+                       {"mpirun -np 3, 1 thread", mpirun(3), "1"},
+                       {"mpirun -np 6 (a rank without replicas), 1 thread", mpirun(6), "1"}});
+    return w;
+  }
+
+  /// Runs scene.toml once per way into its own outputs, and checks them all against the first.
+  void expect_identical_runs(const std::vector<Way>& ways, const std::vector<std::string>& must_have) {
+    std::vector<std::string> outputs;
+    for (std::size_t k = 0; k < ways.size(); ++k) {
+      const Way& w = ways[k];
+      const std::string stem = "run" + std::to_string(k);
+      const Outcome o = run(w.prefix, "run scene.toml --seed 77 --out " + stem + ".h5 --summary " + stem +
+                                          ".json --threads " + w.threads);
+      ASSERT_EQ(o.status, 0) << w.name << "\n" << o.out << o.err;
+      EXPECT_EQ(std::count(o.out.begin(), o.out.end(), '\n'), 1) << w.name << ": one closing line\n" << o.out;
+      outputs.push_back(stem);
+    }
+    std::vector<std::string> expected_files{"scene.toml"};
+    for (const std::string& s : outputs) expected_files.insert(expected_files.end(), {s + ".h5", s + ".json"});
+    std::sort(expected_files.begin(), expected_files.end());
+    EXPECT_EQ(files(), expected_files) << "only rank 0 writes, and only its two files";
+
+    const auto reference = read_h5((dir_ / (outputs[0] + ".h5")).string());
+    for (const std::string& name : must_have) EXPECT_TRUE(reference.contains(name)) << name;
+    const nlohmann::json reference_summary = summary(outputs[0]);
+    for (std::size_t k = 1; k < outputs.size(); ++k) {
+      SCOPED_TRACE(ways[k].name);
+      const auto other = read_h5((dir_ / (outputs[k] + ".h5")).string());
+      EXPECT_EQ(other.size(), reference.size());
+      for (const auto& [name, bytes] : reference) {
+        const auto it = other.find(name);
+        ASSERT_NE(it, other.end()) << name;
+        EXPECT_TRUE(it->second == bytes) << name << " differs";
+      }
+      EXPECT_EQ(summary(outputs[k]), reference_summary);
+    }
+  }
+
+  /// The JSON summary without what may differ between runs of the same seed.
+  nlohmann::json summary(const std::string& stem) const {
+    nlohmann::json j = nlohmann::json::parse(slurp(dir_ / (stem + ".json")));
+    j.erase("wall_seconds");
+    j.erase("threads");
+    return j;
+  }
+
+  /// Every dataset ("path") and attribute ("path@name") of an HDF5 file as its bytes in native layout
+  /// (variable-length strings as their text); the root's wall_seconds and threads left out.
+  static std::map<std::string, std::vector<char>> read_h5(const std::string& path) {
+    std::map<std::string, std::vector<char>> items;
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    EXPECT_GE(file, 0) << path;
+    if (file < 0) return items;
+    struct Visit {
+      hid_t file;
+      std::map<std::string, std::vector<char>>* items;
+    } visit{file, &items};
+    H5Ovisit(
+        file, H5_INDEX_NAME, H5_ITER_INC,
+        [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
+          auto& v = *static_cast<Visit*>(data);
+          const std::string object = std::string(name) == "." ? "/" : "/" + std::string(name);
+          const hid_t obj = H5Oopen(v.file, object.c_str(), H5P_DEFAULT);
+          if (info->type == H5O_TYPE_DATASET) (*v.items)[object] = read_dataset(obj);
+          struct Attrs {
+            std::string object;
+            std::map<std::string, std::vector<char>>* items;
+          } attrs{object, v.items};
+          H5Aiterate2(
+              obj, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+              [](hid_t loc, const char* attr_name, const H5A_info_t*, void* d) -> herr_t {
+                auto& a = *static_cast<Attrs*>(d);
+                const std::string n(attr_name);
+                if (a.object == "/" && (n == "wall_seconds" || n == "threads")) return 0;
+                const hid_t attr = H5Aopen(loc, attr_name, H5P_DEFAULT);
+                (*a.items)[a.object + "@" + n] = read_attribute(attr);
+                H5Aclose(attr);
+                return 0;
+              },
+              &attrs);
+          H5Oclose(obj);
+          return 0;
+        },
+        &visit);
+    H5Fclose(file);
+    return items;
+  }
+
+  static std::vector<char> read_dataset(hid_t set) {
+    const hid_t type = H5Dget_type(set);
+    const hid_t native = H5Tget_native_type(type, H5T_DIR_ASCEND);
+    const hid_t space = H5Dget_space(set);
+    const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
+    std::vector<char> bytes;
+    if (H5Tis_variable_str(type) > 0) {
+      std::vector<char*> text(n);
+      EXPECT_GE(H5Dread(set, native, H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()), 0);
+      for (char* t : text) bytes.insert(bytes.end(), t, t + std::strlen(t) + 1);
+      H5Dvlen_reclaim(native, space, H5P_DEFAULT, text.data());
+    } else {
+      bytes.resize(n * H5Tget_size(native));
+      EXPECT_GE(H5Dread(set, native, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()), 0);
+    }
+    H5Sclose(space);
+    H5Tclose(native);
+    H5Tclose(type);
+    return bytes;
+  }
+
+  static std::vector<char> read_attribute(hid_t attr) {
+    const hid_t type = H5Aget_type(attr);
+    const hid_t native = H5Tget_native_type(type, H5T_DIR_ASCEND);
+    const hid_t space = H5Aget_space(attr);
+    const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
+    std::vector<char> bytes;
+    if (H5Tis_variable_str(type) > 0) {
+      std::vector<char*> text(n);
+      EXPECT_GE(H5Aread(attr, native, text.data()), 0);
+      for (char* t : text) bytes.insert(bytes.end(), t, t + std::strlen(t) + 1);
+      H5Dvlen_reclaim(native, space, H5P_DEFAULT, text.data());
+    } else {
+      bytes.resize(n * H5Tget_size(native));
+      EXPECT_GE(H5Aread(attr, native, bytes.data()), 0);
+    }
+    H5Sclose(space);
+    H5Tclose(native);
+    H5Tclose(type);
+    return bytes;
+  }
+
+  fs::path dir_;
+};
+
+/// A monodisperse hard-sphere cooling state: 5 replicas of 2000 particles, t_end 1, dt 0.01, 10 samples.
+const std::string cooling_scene = R"([run]
+method = "dsmc"
+seed = 1
+replicas = 5
+t_end = 1.0
+dt = 0.01
+samples = 10
+[[species]]
+particles = 2000
+[collision]
+kernel = "hard-sphere"
+restitution = 0.8
+)";
+
+TEST_F(MpiRun, CoolingStateIsBitIdenticalOverRanksAndThreads) {
+  write("scene.toml", cooling_scene);
+  expect_identical_runs(ways(false), {"/temperature/replicas", "/log_temperature/replicas", "/momentum/replicas",
+                                      "/collisions/replicas", "/counters/candidates", "/temperature/mean@description"});
+}
+
+TEST_F(MpiRun, ShearWithGaussianThermostatIsBitIdentical) {
+  write("scene.toml", cooling_scene + "[thermostat]\nkind = \"gaussian\"\n[shear]\nrate = 0.5\n");
+  expect_identical_runs(ways(false), {"/temperature/replicas", "/viscosity/pressure_kinetic",
+                                      "/viscosity/pressure_collisional", "/viscosity/eta_star_mean"});
+}
+
+TEST_F(MpiRun, IntruderIsBitIdentical) {
+  write("scene.toml", R"([run]
+method = "gillespie"
+seed = 3
+replicas = 5
+t_end = 500.0
+samples = 50
+[intruder]
+dimension = 1
+mass = 1.0
+restitution = 0.5
+bath = "gaussian"
+bath_a = 1.0
+bath_density = 1.0
+[output]
+histogram = { shells = 20, radius = 5.0 }
+)");
+  expect_identical_runs(ways(true), {"/temperature/replicas", "/intruder/velocity", "/intruder/speed_counts"});
+}
+
+TEST_F(MpiRun, BadSceneStopsEveryRankWithOneMessage) {
+  write("scene.toml", cooling_scene + "[shear]\nrate = \"fast\"\n");
+  const Outcome o = run(mpirun(2), "run scene.toml --out bad.h5");
+  EXPECT_EQ(o.status, 2) << o.out << o.err;
+  const std::string first_line = o.err.substr(0, o.err.find('\n'));
+  EXPECT_NE(first_line.find("scene.toml"), std::string::npos) << o.err;
+  EXPECT_EQ(o.err.find(first_line, first_line.size()), std::string::npos) << "printed twice:\n" << o.err;
+  EXPECT_EQ(files(), std::vector<std::string>{"scene.toml"});
+}
+
+TEST_F(MpiRun, TheoryAndExplainPrintOnce) {
+  write("scene.toml", cooling_scene);
+  const Outcome theory = run(mpirun(2), "theory scene.toml");
+  ASSERT_EQ(theory.status, 0) << theory.err;
+  EXPECT_TRUE(nlohmann::json::accept(theory.out)) << theory.out;
+  const Outcome explain = run(mpirun(2), "run scene.toml --explain");
+  ASSERT_EQ(explain.status, 0) << explain.err;
+  const std::string kernel_line = "kernel       dsmc<";
+  const auto first = explain.out.find(kernel_line);
+  EXPECT_NE(first, std::string::npos) << explain.out;
+  EXPECT_EQ(explain.out.find(kernel_line, first + 1), std::string::npos) << explain.out;
+  EXPECT_NE(explain.out.find("ranks        2 MPI ranks"), std::string::npos) << explain.out;
+  EXPECT_NE(explain.out.find("rank 0 runs 3 of the 5 replicas"), std::string::npos) << explain.out;
+  EXPECT_EQ(files(), std::vector<std::string>{"scene.toml"});
+}
+
+}  // namespace
+}  // namespace granmc
