@@ -13,7 +13,7 @@ OUT/table.md (simulation with CI against theory) and OUT/figure.json (all number
 
 Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.packing_fraction), and for two
 species "mu" (m_1/m_2), "omega" (sigma_1/sigma_2), "delta" (n_1/n_2, total density and particles kept).
-`reference_curve = LABEL` divides every other curve by that one at the same x (000 Figs. 7-9: eta(alpha)/eta(1)).
+`y_log = true` draws the y axis logarithmic. `reference_curve = LABEL` divides every other curve by that one at the same x (000 Figs. 7-9: eta(alpha)/eta(1)).
 Plotted quantities (y): "temperature_ratio" (gamma = T_1/T_2), "temperature_ratio_relative"
 (gamma(x)/gamma(x = 0) of the same curve, 000 Fig. 5), "cumulants" (c_i = 2 a2_i per species, 000 Fig. 1),
 "intruder_temperature_ratio" (T/T_B of a Gillespie intruder, 002 Figs. 3-4; "alpha" then sets
@@ -364,6 +364,8 @@ def plot(fig, results, path):
                         label=f"{approx}, {c['label']}{suffix}")
     ax.set_xlabel(fig.get("x_label", fig["x"]))
     ax.set_ylabel(fig.get("y_label", fig["y"]))
+    if fig.get("y_log"):
+        ax.set_yscale("log")
     ax.set_title(f"{fig['paper']}: {fig['caption']}", fontsize="small")
     ax.legend(fontsize="x-small")
     f.tight_layout()
