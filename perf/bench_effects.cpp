@@ -42,7 +42,7 @@
 //
 // Defaults: 5 repetitions, aggregates only, min time 1 s (0.5 s for the per-particle benchmarks),
 // random interleaving of the repetitions (the gases stay alive, so this costs no rebuilding); any
-// --benchmark_* flag overrides them. About 70 s and 0.27 GB on the project machine (2 vCPUs, load 2.5-3).
+// --benchmark_* flag overrides them. About 90 s on the project machine (2 vCPUs); nine gases of 32 MB each.
 // Without the plain benchmark (e.g. --benchmark_filter=hand) the ratios print as nan.
 #include <benchmark/benchmark.h>
 #include <unistd.h>
