@@ -151,6 +151,11 @@ def theory_of(granmc, scene, tmp_path):
 
 # ---- quantities -------------------------------------------------------------------------------------------
 
+# y -> the key of the summary's and the theory's viscosity blocks
+VISCOSITY_KEYS = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
+                  "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}
+
+
 def simulated(summary, y):
     """[(label suffix, mean, ci)] for one point."""
     if y in ("temperature_ratio", "temperature_ratio_relative"):
@@ -166,10 +171,8 @@ def simulated(summary, y):
         v = summary["viscosity"]
         k, t = ("eta_kinetic_over_eta0", "eta_over_eta0") if y.endswith("eta0") else ("eta_kinetic_star", "eta_star")
         return [(", kinetic", v[k]["mean"], v[k]["ci"]), (", total", v[t]["mean"], v[t]["ci"])]
-    if y.startswith("viscosity_"):
-        key = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
-               "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}[y]
-        r = summary["viscosity"][key]
+    if y in VISCOSITY_KEYS:
+        r = summary["viscosity"][VISCOSITY_KEYS[y]]
         return [("", r["mean"], r["ci"])]
     if y == "cumulants":
         species = summary["species"]
@@ -199,9 +202,8 @@ def theoretical(th, y):
         k, t = ("eta_kinetic_over_eta0", "eta_over_eta0") if y.endswith("eta0") else ("eta_kinetic_star", "eta_star")
         if k in v:
             out["first Sonine"] = [v[k], v[t]]
-    elif y.startswith("viscosity_") and "viscosity" in th:
-        key = {"viscosity_over_eta0": "eta_over_eta0", "viscosity_kinetic_over_eta0": "eta_kinetic_over_eta0",
-               "viscosity_star": "eta_star", "viscosity_kinetic_star": "eta_kinetic_star"}[y]
+    elif y in VISCOSITY_KEYS and "viscosity" in th:
+        key = VISCOSITY_KEYS[y]
         v = th["viscosity"]
         if "first_sonine_gaussian_thermostat" in v:  # one species: both reference states (000 Fig. 6 a, b)
             out["first Sonine, HSS"] = [v["first_sonine_gaussian_thermostat"][key]]
