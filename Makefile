@@ -139,7 +139,7 @@ clean:
 	rm -rf $(BUILD) $(MPI_BUILD)
 
 # Issue 7's stability study: the fast hard cases (ctest -L stability), then the long versions at full size
-# (drivers/scenes/stability/, checks and table in results/stability/table.md; about 10 min).
+# (drivers/scenes/stability/, checks and table in results/stability/table.md; about 4 min).
 stability: build
 	cd $(BUILD) && ctest -L stability --output-on-failure
 	$(PYTHON) drivers/stability.py --granmc $(GRANMC)

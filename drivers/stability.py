@@ -82,6 +82,7 @@ def main():
             s = json.load(f)
         for what, ok, detail in check(scene, s):
             failed += not ok
+            detail = detail.replace("|", "\\|")  # markdown cells
             lines.append(f"| {name} | {what} | {'yes' if ok else '**NO**'} | {detail} | {s['wall_seconds']:.0f} |")
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
