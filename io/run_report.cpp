@@ -179,14 +179,17 @@ IntruderReport intruder_report(const Scene& scene, const RunResult& result) {
 
 }  // namespace
 
+/// The mean of row[k] over first <= k < last.
+double range_mean(const std::vector<double>& row, std::size_t first, std::size_t last) {
+  CompensatedSum sum;
+  for (std::size_t k = first; k < last; ++k) sum.add(row[k]);
+  return sum.value() / static_cast<double>(last - first);
+}
+
 /// Per replica r the mean of rows[r][k] over first <= k < last, then the replica mean.
 MeanCI window_mean(const std::vector<std::vector<double>>& rows, std::size_t first, std::size_t last) {
   std::vector<double> per_replica;
-  for (const std::vector<double>& row : rows) {
-    CompensatedSum sum;
-    for (std::size_t k = first; k < last; ++k) sum.add(row[k]);
-    per_replica.push_back(sum.value() / static_cast<double>(last - first));
-  }
+  for (const std::vector<double>& row : rows) per_replica.push_back(range_mean(row, first, last));
   return replica_mean(per_replica);
 }
 
@@ -241,10 +244,8 @@ ViscosityReport viscosity_report(const Scene& scene, const RunResult& result) {
   const std::size_t middle = first + (samples - first) / 2;
   if (middle > first && samples > middle) {
     std::vector<double> drift;
-    for (std::size_t r = 0; r < replicas; ++r) {
-      const std::vector<std::vector<double>> row{eta[r]};
-      drift.push_back(window_mean(row, middle, samples).mean - window_mean(row, first, middle).mean);
-    }
+    for (const std::vector<double>& row : eta)
+      drift.push_back(range_mean(row, middle, samples) - range_mean(row, first, middle));
     out.drift = replica_mean(drift);
     out.steady = replicas > 1 && std::fabs(out.drift.mean) <= out.drift.ci;
   }

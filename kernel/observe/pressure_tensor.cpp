@@ -4,22 +4,14 @@
 #include <numbers>
 
 #include "kernel/observe/compensated_sum.hpp"
+#include "kernel/observe/gas_observation.hpp"
 
 namespace granmc {
 
 SymTensor reduced_kinetic_pressure(const Scene& scene, const GasState& state) {
-  // Flow velocity first (zero to rounding: collisions and the shear map conserve momentum).
-  CompensatedSum mass, px, py, pz;
-  for (std::size_t i = 0; i < state.species.size(); ++i) {
-    const double m = scene.species[i].mass;
-    state.species[i].for_each_velocity([&](const Vec3& c) {
-      px.add(m * c.x);
-      py.add(m * c.y);
-      pz.add(m * c.z);
-    });
-    mass.add(m * static_cast<double>(state.species[i].size()));
-  }
-  const Vec3 flow = (1.0 / mass.value()) * Vec3{px.value(), py.value(), pz.value()};
+  // About the flow velocity (zero to rounding: collisions and the shear map conserve momentum).
+  const GasTotals totals = gas_totals(scene, gas_moments(state));
+  const Vec3 flow = (1.0 / totals.mass) * totals.momentum;
   CompensatedSum xx, yy, zz, xy, xz, yz;
   for (std::size_t i = 0; i < state.species.size(); ++i) {
     const double m = scene.species[i].mass;

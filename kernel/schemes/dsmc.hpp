@@ -152,12 +152,7 @@ class Dsmc {
       candidates_[q] = static_cast<std::uint64_t>(whole);
     }
     std::fill(step_tallies_.begin(), step_tallies_.end(), CollisionTally{});
-    if constexpr (Shift::active) {
-      collide_step<Kernel, 64>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_, kernel_,
-                               std::get<Shift>(effects_).in_stored_units(state_.scale.u()));
-    } else {
-      collide_step<Kernel>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_, kernel_);
-    }
+    collide_step<Kernel>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_, kernel_, step_shift());
     CollisionTally tally;
     for (std::size_t q = 0; q < pairs_.size(); ++q) {
       add(pair_totals_[q], step_tallies_[q]);
@@ -176,6 +171,12 @@ class Dsmc {
     if (twice_energy_ < reference_twice_energy_ / rescale_factor ||
         twice_energy_ > reference_twice_energy_ * rescale_factor)
       rescale();
+  }
+
+  /// The contact-velocity shift of this step in stored units (collide/enskog_shear_shift.hpp), or none.
+  Shift step_shift() const noexcept {
+    if constexpr (Shift::active) return std::get<Shift>(effects_).in_stored_units(state_.scale.u());
+    else return {};
   }
 
   static void add(CollisionTally& to, const CollisionTally& from) noexcept {
