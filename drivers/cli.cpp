@@ -1,9 +1,7 @@
 #include "drivers/cli.hpp"
 
 #include <omp.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -13,19 +11,14 @@
 
 #include <CLI/CLI.hpp>
 
-#include "drivers/progress.hpp"
-#include "io/hdf5_output.hpp"
-#include "io/run_report.hpp"
+#include "drivers/run_job.hpp"
+#include "drivers/sweep.hpp"
 #include "io/scene_file.hpp"
-#include "io/summary_json.hpp"
 #include "io/theory_json.hpp"
 #include "granmc/version.hpp"
 #include "kernel/core/species_store.hpp"
 #include "kernel/schemes/dispatch.hpp"
 #include "kernel/schemes/run_plan.hpp"
-#ifdef GRANMC_HAVE_MPI
-#include "drivers/mpi_replicas.hpp"
-#endif
 
 namespace granmc {
 
@@ -40,27 +33,6 @@ struct RunArgs {
   bool quiet = false;
   bool explain = false;
 };
-
-/// This process among the MPI ranks (docs/scaling.md): it runs the replicas r with r % size == rank, and
-/// rank 0 alone prints and writes. Without MPI (GRANMC_MPI=OFF), the one process: rank 0 of 1.
-struct Place {
-  int rank = 0;
-  int size = 1;
-};
-
-Place place() {
-#ifdef GRANMC_HAVE_MPI
-  const mpi::World w = mpi::world();
-  return {w.rank, w.size};
-#else
-  return {};
-#endif
-}
-
-/// How many of `replicas` replicas this process runs.
-int own_replicas(int replicas, Place at) {
-  return replicas > at.rank ? (replicas - at.rank + at.size - 1) / at.size : 0;
-}
 
 /// Candidates per second per thread on this machine's kind (docs/performance.md, N = 10^5 to 10^7),
 /// for the time estimate of --explain.
@@ -116,46 +88,13 @@ std::optional<Scene> load_checked_scene(const std::string& path, std::optional<s
 }
 
 /// Loads and checks a scene; on a bad scene prints one message and returns nothing. With MPI every rank
-/// reads the scene and all go on only if all could (collective): a rank that stopped here would leave
-/// the others waiting in the gather. The message comes from rank 0, or from the ranks that failed when
-/// rank 0 did not.
+/// reads the scene and all go on only if all could (all_ranks_ok): a rank that stopped here would leave
+/// the others waiting in the gather.
 std::optional<Scene> checked_scene(const std::string& path, std::optional<std::uint64_t> seed) {
   std::string message;
   std::optional<Scene> scene = load_checked_scene(path, seed, message);
-#ifdef GRANMC_HAVE_MPI
-  const bool root_loaded = mpi::root_ok(scene.has_value());
-  if (!scene && (place().rank == 0 || root_loaded)) std::cerr << message;
-  if (!mpi::all_ok(scene.has_value())) return std::nullopt;
-#else
-  if (!scene) std::cerr << message;
-#endif
+  if (!all_ranks_ok(scene.has_value(), message)) return std::nullopt;
   return scene;
-}
-
-/// The run's result with every replica: the result itself in one process; over several MPI ranks,
-/// rank 0's gathered copy (drivers/mpi_replicas.hpp), the other ranks' without replicas.
-RunResult completed(RunResult local) {
-#ifdef GRANMC_HAVE_MPI
-  return mpi::gather_replicas(std::move(local));
-#else
-  return local;
-#endif
-}
-
-/// A failure during the run: one message and exit status 1. Over several MPI ranks the message names the
-/// rank and every rank is ended (MPI_Abort), so that none waits for it.
-int run_failure(const std::exception& e) {
-  const Place at = place();
-  if (at.size == 1) {
-    std::cerr << "granmc: run failed: " << e.what() << "\n";
-    return exit_run_failure;
-  }
-  std::cerr << "granmc: run failed on MPI rank " << at.rank << " of " << at.size << ": " << e.what()
-            << "\n(ending all ranks)\n" << std::flush;
-#ifdef GRANMC_HAVE_MPI
-  mpi::abort_all(exit_run_failure);
-#endif
-  return exit_run_failure;
 }
 
 std::string default_output(const std::string& scene_path) {
@@ -170,35 +109,16 @@ int run_command(const RunArgs& args) {
   const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
 
   const Place at = place();
-  const bool show_progress = at.rank == 0 && !args.quiet && isatty(STDERR_FILENO);
-  ProgressLine progress(static_cast<std::uint64_t>(own_replicas(scene.run.replicas, at)) * (scene.run.samples + 1),
-                        show_progress);
-  RunOptions options;
-  options.threads = args.threads;
-  options.on_sample = [&progress] { progress.tick(); };
-  options.replica_offset = at.rank;
-  options.replica_stride = at.size;
-
   try {
-    const auto start = std::chrono::steady_clock::now();
-    const RunResult result = completed(run_scene(scene, options));
-    progress.finish();
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (at.rank != 0) return exit_ok;  // rank 0 alone reports and writes
-    const RunReport report = make_run_report(scene, result, wall);
-    for (const std::string& file : {out, args.summary}) {
-      const auto dir = std::filesystem::path(file).parent_path();
-      if (!file.empty() && !dir.empty()) std::filesystem::create_directories(dir);
-    }
-    write_hdf5(out, scene, result, report);
-    if (!args.summary.empty()) write_summary(args.summary, summary_json(scene, result, report));
+    const JobResult done = run_job(scene, {out, args.summary}, args.threads, args.quiet);
+    if (at.rank != 0) return exit_ok;  // rank 0 alone reports
     if (!args.quiet && at.size == 1) {
       std::printf("granmc %s: %s, %d replicas, %.1f s on %d threads -> %s%s%s\n", version, args.scene.c_str(),
-                  scene.run.replicas, wall, result.threads, out.c_str(), args.summary.empty() ? "" : ", ",
+                  scene.run.replicas, done.wall_seconds, done.threads, out.c_str(), args.summary.empty() ? "" : ", ",
                   args.summary.c_str());
     } else if (!args.quiet) {
       std::printf("granmc %s: %s, %d replicas, %.1f s on %d MPI ranks (rank 0: %d threads) -> %s%s%s\n", version,
-                  args.scene.c_str(), scene.run.replicas, wall, at.size, result.threads, out.c_str(),
+                  args.scene.c_str(), scene.run.replicas, done.wall_seconds, at.size, done.threads, out.c_str(),
                   args.summary.empty() ? "" : ", ", args.summary.c_str());
     }
     return exit_ok;
@@ -233,6 +153,16 @@ int cli_main(int argc, char** argv) {
   run_cmd->add_flag("--explain", run.explain,
                     "Print the kernel, the effects, the memory and a cost estimate, and run nothing");
 
+  SweepArgs sweep;
+  CLI::App* sweep_cmd = app.add_subcommand(
+      "sweep", "Run the scenes of a sweep file one after another: one HDF5 file and JSON summary each, and "
+               "index.json; a rerun skips the scenes already done");
+  sweep_cmd->add_option("sweep", sweep.sweep, "Sweep file (TOML, see docs/scenes.md, \"Sweep files\")")->required();
+  sweep_cmd->add_option("--out-dir", sweep.out_dir,
+                        "Directory of the outputs and index.json (default: <sweep name>/ in the current directory)");
+  sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
+  sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress lines, no notes on skipped scenes, no closing message");
+
   std::string theory_scene;
   CLI::App* theory_cmd = app.add_subcommand("theory", "Print the theory predictions that apply to a scene (JSON)");
   theory_cmd->add_option("scene", theory_scene, "Scene file (TOML)")->required();
@@ -255,6 +185,7 @@ int cli_main(int argc, char** argv) {
     return exit_bad_input;
   }
   if (*run_cmd) return run_command(run);
+  if (*sweep_cmd) return sweep_command(sweep);
   return theory_command(theory_scene);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// The granmc command line (CLI11): `granmc run`, `granmc theory`. Exit status: 0 success, 2 bad scene or
-// arguments (one message on stderr, no output files), 1 failure during the run (SCENES.md).
+// The granmc command line (CLI11): `granmc run`, `granmc sweep`, `granmc theory`. Exit status: 0 success,
+// 2 bad scene, sweep file or arguments (one message on stderr, no output files), 1 failure during the run
+// (SCENES.md).
 
 namespace granmc {
 

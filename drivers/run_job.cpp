@@ -1,0 +1,108 @@
+#include "drivers/run_job.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "drivers/cli.hpp"
+#include "drivers/progress.hpp"
+#include "io/hdf5_output.hpp"
+#include "io/run_report.hpp"
+#include "io/summary_json.hpp"
+#include "kernel/schemes/dispatch.hpp"
+#include "kernel/schemes/run_options.hpp"
+#ifdef GRANMC_HAVE_MPI
+#include "drivers/mpi_replicas.hpp"
+#endif
+
+namespace granmc {
+
+namespace {
+
+/// The run's result with every replica: the result itself in one process; over several MPI ranks,
+/// rank 0's gathered copy (drivers/mpi_replicas.hpp), the other ranks' without replicas.
+RunResult completed(RunResult local) {
+#ifdef GRANMC_HAVE_MPI
+  return mpi::gather_replicas(std::move(local));
+#else
+  return local;
+#endif
+}
+
+}  // namespace
+
+Place place() {
+#ifdef GRANMC_HAVE_MPI
+  const mpi::World w = mpi::world();
+  return {w.rank, w.size};
+#else
+  return {};
+#endif
+}
+
+int own_replicas(int replicas, Place at) {
+  return replicas > at.rank ? (replicas - at.rank + at.size - 1) / at.size : 0;
+}
+
+bool all_ranks_ok(bool ok_here, const std::string& message) {
+#ifdef GRANMC_HAVE_MPI
+  const bool root_is_ok = mpi::root_ok(ok_here);
+  if (!ok_here && (place().rank == 0 || root_is_ok)) std::cerr << message;
+  return mpi::all_ok(ok_here);
+#else
+  if (!ok_here) std::cerr << message;
+  return ok_here;
+#endif
+}
+
+bool rank0_value(bool value) {
+#ifdef GRANMC_HAVE_MPI
+  return mpi::root_ok(value);
+#else
+  return value;
+#endif
+}
+
+JobResult run_job(const Scene& scene, const JobOutputs& outputs, int threads, bool quiet) {
+  const Place at = place();
+  const bool show_progress = at.rank == 0 && !quiet && isatty(STDERR_FILENO);
+  ProgressLine progress(static_cast<std::uint64_t>(own_replicas(scene.run.replicas, at)) * (scene.run.samples + 1),
+                        show_progress);
+  RunOptions options;
+  options.threads = threads;
+  options.on_sample = [&progress] { progress.tick(); };
+  options.replica_offset = at.rank;
+  options.replica_stride = at.size;
+
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult result = completed(run_scene(scene, options));
+  progress.finish();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (at.rank != 0) return {wall, result.threads};  // rank 0 alone reports and writes
+  const RunReport report = make_run_report(scene, result, wall);
+  for (const std::string& file : {outputs.hdf5, outputs.summary}) {
+    const auto dir = std::filesystem::path(file).parent_path();
+    if (!file.empty() && !dir.empty()) std::filesystem::create_directories(dir);
+  }
+  write_hdf5(outputs.hdf5, scene, result, report);
+  if (!outputs.summary.empty()) write_summary(outputs.summary, summary_json(scene, result, report));
+  return {wall, result.threads};
+}
+
+int run_failure(const std::exception& e) {
+  const Place at = place();
+  if (at.size == 1) {
+    std::cerr << "granmc: run failed: " << e.what() << "\n";
+    return exit_run_failure;
+  }
+  std::cerr << "granmc: run failed on MPI rank " << at.rank << " of " << at.size << ": " << e.what()
+            << "\n(ending all ranks)\n" << std::flush;
+#ifdef GRANMC_HAVE_MPI
+  mpi::abort_all(exit_run_failure);
+#endif
+  return exit_run_failure;
+}
+
+}  // namespace granmc

@@ -1,0 +1,195 @@
+#include "drivers/sweep.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "drivers/cli.hpp"
+#include "drivers/run_job.hpp"
+#include "io/summary_json.hpp"
+#include "io/sweep_file.hpp"
+#include "granmc/version.hpp"
+#include "kernel/schemes/dispatch.hpp"
+
+namespace granmc {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* index_name = "index.json";
+
+/// FNV-1a, 64 bits, of the scene text: stable across builds and machines (std::hash is not), and enough to
+/// notice an edited scene; it guards against accidents, not against an adversary.
+std::string scene_hash(const std::string& text) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (const char c : text) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ULL;
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "fnv1a64:%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+/// Reads the sweep and makes its scenes; on a bad sweep or scene sets `message` and returns nothing.
+std::optional<Sweep> load_checked_sweep(const std::string& path, std::string& message) {
+  try {
+    Sweep sweep = load_sweep(path);
+    for (const SweepScene& s : sweep.scenes) {
+      if (const std::string why = unsupported_reason(s.scene); !why.empty()) {
+        message = "granmc: " + path + ": " + s.scene.source_path + ": " + why + "\n";
+        return std::nullopt;
+      }
+    }
+    return sweep;
+  } catch (const SweepError& e) {
+    message = std::string("granmc: ") + e.what() + "\n";
+    return std::nullopt;
+  }
+}
+
+/// What an earlier run's index.json says of each scene, by name: its status and scene hash. Nothing when
+/// there is no readable index (every scene then runs).
+std::map<std::string, std::pair<std::string, std::string>> earlier_records(const fs::path& index) {
+  std::map<std::string, std::pair<std::string, std::string>> records;
+  std::ifstream in(index);
+  if (!in) return records;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object() || !j.contains("scenes") || !j["scenes"].is_array()) return records;
+  for (const auto& s : j["scenes"]) {
+    const auto text = [&s](const char* key) {
+      return s.is_object() && s.contains(key) && s[key].is_string() ? s[key].get<std::string>() : std::string();
+    };
+    if (!text("name").empty()) records[text("name")] = {text("status"), text("scene_hash")};
+  }
+  return records;
+}
+
+/// Removes the temporary files (FILE.tmp-PID, io/hdf5_output.hpp, io/summary_json.hpp) that a killed run
+/// left of `files` in `dir`; returns their names.
+std::vector<std::string> remove_stale_temporaries(const fs::path& dir, const std::set<std::string>& files) {
+  std::vector<std::string> removed;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    const std::size_t at = name.rfind(".tmp-");
+    if (at == std::string::npos || !files.contains(name.substr(0, at))) continue;
+    const std::string pid = name.substr(at + 5);
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    fs::remove(entry.path());
+    removed.push_back(name);
+  }
+  return removed;
+}
+
+std::string hdf5_name(const SweepScene& s) { return s.name + ".h5"; }
+std::string summary_name(const SweepScene& s) { return s.name + ".json"; }
+
+nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, const std::vector<std::string>& hashes,
+                          const std::vector<bool>& done) {
+  nlohmann::json scenes = nlohmann::json::array();
+  for (std::size_t k = 0; k < sweep.scenes.size(); ++k) {
+    const SweepScene& s = sweep.scenes[k];
+    scenes.push_back({{"name", s.name},
+                      {"values", s.values},
+                      {"hdf5", hdf5_name(s)},
+                      {"summary", summary_name(s)},
+                      {"status", done[k] ? "done" : "pending"},
+                      {"scene_hash", hashes[k]}});
+  }
+  return {{"sweep", sweep_path}, {"base", sweep.base_path}, {"version", version}, {"scenes", scenes}};
+}
+
+std::string plural(std::size_t n, const char* word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+}  // namespace
+
+int sweep_command(const SweepArgs& args) {
+  // Every rank reads the sweep and all go on only if all could: a rank that stopped here would leave the
+  // others waiting in the first scene's gather.
+  std::string message;
+  const std::optional<Sweep> loaded = load_checked_sweep(args.sweep, message);
+  if (!all_ranks_ok(loaded.has_value(), message)) return exit_bad_input;
+  const Sweep& sweep = *loaded;
+  const std::size_t count = sweep.scenes.size();
+
+  const Place at = place();
+  const bool talk = at.rank == 0 && !args.quiet;
+  const fs::path dir = args.out_dir.empty() ? fs::path(args.sweep).stem() : fs::path(args.out_dir);
+  std::vector<std::string> hashes;
+  for (const SweepScene& s : sweep.scenes) hashes.push_back(scene_hash(s.scene.source_text));
+
+  try {
+    // Rank 0 alone looks at what an earlier run left (it alone writes); every rank learns which scenes are
+    // done, so that all run the same scenes in the same order.
+    std::vector<bool> done(count, false);
+    if (at.rank == 0) {
+      fs::create_directories(dir);
+      std::set<std::string> files = {index_name};
+      for (const SweepScene& s : sweep.scenes) files.insert({hdf5_name(s), summary_name(s)});
+      for (const std::string& name : remove_stale_temporaries(dir, files))
+        if (talk) std::printf("granmc sweep: removed %s, left by an interrupted run\n", (dir / name).c_str());
+      const auto records = earlier_records(dir / index_name);
+      for (std::size_t k = 0; k < count; ++k) {
+        const SweepScene& s = sweep.scenes[k];
+        const auto record = records.find(s.name);
+        done[k] = record != records.end() && record->second == std::pair<std::string, std::string>{"done", hashes[k]} &&
+                  fs::exists(dir / hdf5_name(s)) && fs::exists(dir / summary_name(s));
+        if (done[k] && talk)
+          std::printf("granmc sweep: scene %zu of %zu (%s) skipped: done by an earlier run with the same scene\n",
+                      k + 1, count, s.name.c_str());
+      }
+      write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, done));
+      std::fflush(stdout);
+    }
+    for (std::size_t k = 0; k < count; ++k) done[k] = rank0_value(done[k]);
+
+    const auto sweep_start = std::chrono::steady_clock::now();
+    std::size_t to_run = 0;
+    for (std::size_t k = 0; k < count; ++k) to_run += done[k] ? 0 : 1;
+    std::size_t ran = 0;
+    double spent = 0.0;
+    for (std::size_t k = 0; k < count; ++k) {
+      if (done[k]) continue;
+      const SweepScene& s = sweep.scenes[k];
+      const auto start = std::chrono::steady_clock::now();
+      run_job(s.scene, {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads, args.quiet);
+      done[k] = true;
+      if (at.rank != 0) continue;
+      write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, done));
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      spent += seconds;
+      ++ran;
+      if (talk) {
+        // The scenes left are assumed to cost what those run so far did on average.
+        std::printf("granmc sweep: scene %zu of %zu (%s) done in %.1f s, about %.0f s left\n", k + 1, count,
+                    s.name.c_str(), seconds, spent / static_cast<double>(ran) * static_cast<double>(to_run - ran));
+        std::fflush(stdout);
+      }
+    }
+    if (talk) {
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
+      const std::string where = at.size == 1 ? "" : " on " + std::to_string(at.size) + " MPI ranks";
+      std::printf("granmc %s: %s, %s (%zu run, %zu skipped) in %.1f s%s -> %s\n", version, args.sweep.c_str(),
+                  plural(count, "scene").c_str(), to_run, count - to_run, wall, where.c_str(),
+                  (dir / index_name).c_str());
+    }
+    return exit_ok;
+  } catch (const std::exception& e) {
+    return run_failure(e);
+  }
+}
+
+}  // namespace granmc
