@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
-.PHONY: all setup configure build run test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-8-shear-rate fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost accuracy-cost bench-effects stability
 
 all: build
@@ -55,6 +55,11 @@ fig-003: build
 # 003's relaxation term: how the choice of f^(0) moves eta (results/003_f0_bias/table.md, about 4 min).
 relaxation-bias-003: build
 	$(PYTHON) drivers/relaxation_bias.py --granmc $(GRANMC)
+
+# 000 Fig. 8 at omega = 0.5 and 1: eta* against the shear rate, extrapolated to a* -> 0 (about 30 min).
+fig-000-8-shear-rate: build
+	$(PYTHON) drivers/shear_rate_extrapolation.py drivers/scenes/000_fig8_shear_rate/omega0.5.toml \
+		drivers/scenes/000_fig8_shear_rate/omega1.toml --granmc $(GRANMC)
 
 # Paper 002's figures (1D Gillespie intruder).
 fig-002-3 fig-002-4 fig-002-5: fig-002-%: build

@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""The Navier-Stokes viscosity as the limit a* -> 0 of the sheared steady state (issue 4, 000 Fig. 8).
+
+Usage: /usr/bin/python3 drivers/shear_rate_extrapolation.py SWEEP.toml [SWEEP.toml ...]
+           [--granmc build/bin/granmc] [--out results/000_fig8_shear_rate]
+
+Each sweep file (drivers/scenes/000_fig8_shear_rate/omega*.toml) runs one mixture at several restitutions
+alpha and shear rates a with `granmc sweep` (so a rerun resumes and skips what is done). Uniform shear flow
+is non-Newtonian: eta*(a*) = eta*_NS + c a*^2 + O(a*^4) (the stress is odd in a, so eta is even), and c grows
+with dissipation. Per alpha this fits eta* against a*^2 (weighted least squares over the rates, a* the mean
+reduced shear rate over the averaging window) and reports the intercept, its ratio to the elastic
+intercept, and the first-Sonine theory (`granmc theory`). CIs follow granmc's replica convention
+(3.2 standard errors, p = 0.999); the ratio's CI treats the two intercepts as independent, which
+overstates it (the runs share their seed). Writes OUT/<sweep stem>/ (the sweep's outputs), OUT/table.md
+and OUT/shear_rate.png.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import tempfile
+
+import numpy as np
+
+LAMBDA_P = 3.2  # granmc's CI half-width in standard errors (docs/physics.md, replica statistics)
+
+
+def window_mean_shear_rate(v):
+    """Mean reduced shear rate a* over the samples of the viscosity window (the last half)."""
+    a = np.asarray(v["reduced_shear_rate"]["mean"], dtype=float)
+    return float(np.mean(a[len(a) // 2:]))
+
+
+def points_of(sweep_dir):
+    """(alpha, a*, eta*, sigma of eta*, scene values) per finished scene of a sweep's index."""
+    with open(os.path.join(sweep_dir, "index.json")) as f:
+        index = json.load(f)
+    points = []
+    for s in index["scenes"]:
+        if s["status"] != "done":
+            raise SystemExit(f"{sweep_dir}: scene {s['name']} did not finish; rerun to resume")
+        with open(os.path.join(sweep_dir, s["summary"])) as f:
+            v = json.load(f)["viscosity"]
+        points.append((s["values"]["collision.restitution"], window_mean_shear_rate(v), v["eta_star"]["mean"],
+                       v["eta_star"]["ci"] / LAMBDA_P, s["values"]))
+    return points
+
+
+def fit_intercept(a_star, eta, sigma):
+    """Weighted least squares eta = b0 + b1 a*^2; returns (b0, sigma_b0, b1)."""
+    x = np.asarray(a_star) ** 2
+    A = np.vstack([np.ones_like(x), x]).T
+    w = 1.0 / np.asarray(sigma) ** 2
+    cov = np.linalg.inv(A.T @ (A * w[:, None]))
+    b = cov @ A.T @ (w * np.asarray(eta))
+    return float(b[0]), float(np.sqrt(cov[0, 0])), float(b[1])
+
+
+def theory(granmc, base_text, values):
+    """First-Sonine eta* and eta(alpha)/eta(1) for the base scene with the sweep's values set."""
+    text = base_text
+    for key, value in values.items():
+        if key == "species[0].diameter":  # the first [[species]] table's diameter
+            text = re.sub(r"(\[\[species\]\][^\[]*?diameter = )[0-9.eE+-]+", rf"\g<1>{value}", text, count=1)
+        elif key in ("collision.restitution", "shear.rate"):
+            text = re.sub(rf"(?m)^{key.split('.')[1]} = .*$", f"{key.split('.')[1]} = {value}", text)
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
+        f.write(text)
+    try:
+        out = subprocess.run([granmc, "theory", f.name], check=True, capture_output=True, text=True).stdout
+    finally:
+        os.unlink(f.name)
+    fs = json.loads(out)["viscosity"]["first_sonine"]
+    return fs["eta_star"], fs["eta_over_eta_elastic"]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("sweeps", nargs="+")
+    p.add_argument("--granmc", default="build/bin/granmc")
+    p.add_argument("--out", default="results/000_fig8_shear_rate")
+    args = p.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, len(args.sweeps), figsize=(5.5 * len(args.sweeps), 4.5), squeeze=False)
+    lines = ["# eta* against the shear rate, extrapolated to a* -> 0 (`make fig-000-8-shear-rate`)", "",
+             "CI: 3.2 standard errors (p = 0.999). eta*(0): weighted fit eta* = eta*(0) + c a*^2 over the rates.", ""]
+    for sweep, ax in zip(args.sweeps, axes[0]):
+        stem = os.path.splitext(os.path.basename(sweep))[0]
+        sweep_dir = os.path.join(args.out, stem)
+        subprocess.run([args.granmc, "sweep", sweep, "--out-dir", sweep_dir], check=True)
+        with open(os.path.join(os.path.dirname(sweep), "base.toml")) as f:
+            base_text = f.read()
+        points = points_of(sweep_dir)
+        alphas = sorted({pt[0] for pt in points}, reverse=True)
+        lines += [f"## {stem}", "",
+                  "| alpha | a* at each rate | eta* at each rate (CI) | c | eta*(a*->0) | CI | first Sonine eta* "
+                  "| eta(alpha)/eta(1) at the largest rate | extrapolated | CI | first Sonine |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|"]
+        fits = {}
+        for alpha in alphas:
+            pts = sorted([pt for pt in points if pt[0] == alpha], key=lambda pt: pt[1])
+            a_star, eta, sig = [pt[1] for pt in pts], [pt[2] for pt in pts], [pt[3] for pt in pts]
+            b0, s0, c = fit_intercept(a_star, eta, sig)
+            th_star, th_ratio = theory(args.granmc, base_text, pts[0][4])
+            fits[alpha] = (b0, s0, c, th_star, th_ratio, pts)
+            x = np.asarray(a_star) ** 2
+            shown = ax.errorbar(x, eta, yerr=LAMBDA_P * np.asarray(sig), fmt="o", label=f"alpha = {alpha}")
+            xs = np.linspace(0.0, max(x) * 1.05, 50)
+            ax.plot(xs, b0 + c * xs, "-", color=shown[0].get_color())
+            ax.plot([0.0], [th_star], "*", ms=12, color=shown[0].get_color())
+        ref = fits[1.0] if 1.0 in fits else None
+        for alpha in alphas:
+            b0, s0, c, th_star, th_ratio, pts = fits[alpha]
+            rates = ", ".join(f"{pt[1]:.3f}" for pt in pts)
+            etas = ", ".join(f"{pt[2]:.4f} ({LAMBDA_P * pt[3]:.4f})" for pt in pts)
+            if ref:
+                top = pts[-1][2] / ref[5][-1][2]
+                ratio = b0 / ref[0]
+                ratio_ci = LAMBDA_P * ratio * np.hypot(s0 / b0, ref[1] / ref[0]) if alpha != 1.0 else 0.0
+                tail = f"{top:.4f} | {ratio:.4f} | {ratio_ci:.4f} | {th_ratio:.4f}"
+            else:
+                tail = "- | - | - | -"
+            lines.append(f"| {alpha} | {rates} | {etas} | {c:.2f} | {b0:.4f} | {LAMBDA_P * s0:.4f} | {th_star:.4f} "
+                         f"| {tail} |")
+        lines.append("")
+        ax.set_xlabel("a*^2 (mean over the averaging window)")
+        ax.set_ylabel("eta*")
+        ax.set_title(f"{stem}: eta* vs a*^2; lines: fits, stars: first Sonine", fontsize=9)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.out, "shear_rate.png"), dpi=120)
+    with open(os.path.join(args.out, "table.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
