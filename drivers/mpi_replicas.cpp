@@ -18,7 +18,7 @@ static_assert(sizeof(SymTensor) == 6 * sizeof(double) && std::is_trivially_copya
 // and read_replica below (and to the round trip in tests/test_mpi.cpp); then update the sizes.
 static_assert(sizeof(SpeciesSeries) == 120, "SpeciesSeries changed: serialise the new field");
 static_assert(sizeof(IntruderSeries) == 144, "IntruderSeries changed: serialise the new field");
-static_assert(sizeof(ReplicaSeries) == 464, "ReplicaSeries changed: serialise the new field");
+static_assert(sizeof(ReplicaSeries) == 480, "ReplicaSeries changed: serialise the new field");
 #endif
 
 void write_species(ByteWriter& out, const SpeciesSeries& s) {
@@ -98,6 +98,8 @@ void write_replica(ByteWriter& out, const ReplicaSeries& s) {
   out.array(s.reduced_shear_rate);
   out.value(s.rescales);
   out.value(s.momentum_removed_relative);
+  out.value(static_cast<std::uint8_t>(s.energy_residual.has_value()));
+  out.value(s.energy_residual.value_or(0.0));
   out.value(static_cast<std::uint8_t>(s.intruder.has_value()));
   if (s.intruder) write_intruder(out, *s.intruder);
 }
@@ -122,6 +124,10 @@ ReplicaSeries read_replica(ByteReader& in) {
   s.reduced_shear_rate = in.array<double>();
   s.rescales = in.value<std::uint64_t>();
   s.momentum_removed_relative = in.value<double>();
+  const auto has_energy_residual = in.value<std::uint8_t>();
+  const double energy_residual = in.value<double>();
+  if (has_energy_residual > 1) throw std::runtime_error("replica message: bad energy residual flag");
+  if (has_energy_residual) s.energy_residual = energy_residual;
   const auto has_intruder = in.value<std::uint8_t>();
   if (has_intruder > 1) throw std::runtime_error("replica message: bad intruder flag");
   if (has_intruder) s.intruder = read_intruder(in);

@@ -6,7 +6,8 @@ Usage: /usr/bin/python3 drivers/stability.py [--granmc build/bin/granmc] [--out 
 Runs every scene in drivers/scenes/stability/ and checks its summary: every reported temperature finite
 and positive; for gases, the total momentum at rounding level (|P| / sqrt(M 2E) < 1e-10) unless white
 noise drives it (001 Remark 1: then it is reported); with the Gaussian thermostat compensating the cooling
-(and no shear) T(t) = T(0) to 1e-9; under shear P_xy < 0 and finite; the event scheme's majorant
+(and no shear) T(t) = T(0) to 1e-9; for the time-stepped gas the energy bookkeeping against a direct sum
+to 1e-10 (docs/physics.md, "Energy balance"); under shear P_xy < 0 and finite; the event scheme's majorant
 violations reported; the needle's bisection fallbacks reported. Writes OUT/table.md and exits 1 if a check
 fails. The fast versions of the same cases are `ctest -L stability`.
 """
@@ -46,6 +47,9 @@ def check(scene, s):
             pxy = s["viscosity"]["pressure_xy"]["mean"][1:]
             out.append(("shear: P_xy < 0, finite", finite(pxy) and max(pxy) < 0.0,
                         f"P_xy/nT (end) = {pxy[-1]:.4f}, a* = {s['viscosity']['reduced_shear_rate']['mean'][-1]:.3f}"))
+        if "energy_residual_max" in s:  # time-stepped gas: kernel/observe/gas_series.hpp, energy_balance_tolerance
+            r = s["energy_residual_max"]
+            out.append(("energy balance < 1e-10", r is not None and r < 1e-10, f"max |E_tracked/E_summed - 1| = {r:.2g}"))
         if s.get("method") == "event":
             out.append(("majorant violations (reported)", True, f"{s['majorant_violations']} of {s['candidates']}"))
         if decades > 1.0:

@@ -434,6 +434,13 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
             "event scheme: candidates whose relative speed exceeded the majorant U_max their waiting time "
             "was drawn with, per replica (count; 0 means the thinning was exact)");
   w.uint64s("/counters/rescales", rescales, "velocity rescalings of each replica in long cooling runs (count)");
+  std::vector<double> energy_residual;
+  for (const ReplicaSeries& s : result.replicas)
+    if (s.energy_residual) energy_residual.push_back(*s.energy_residual);
+  if (energy_residual.size() == result.replicas.size() && !energy_residual.empty())
+    w.doubles("/counters/energy_residual", energy_residual,
+              "largest |E_tracked / E_summed - 1| over the sample times per replica: the steps' energy "
+              "bookkeeping against a direct sum over the particles (dimensionless; rounding only)");
   w.doubles("/counters/momentum_removed_relative", momentum_removed,
             "sum over rescalings of the removed centre-of-mass momentum |P| / sqrt(M 2 E_kin) per replica "
             "(dimensionless)");

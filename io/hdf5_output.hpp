@@ -18,7 +18,8 @@
 //   /momentum_relative/{mean,ci} [S], /momentum_relative/replicas [R x S]
 //   /collisions/replicas      [R x S], cumulative accepted collisions (stored as double, exact below 2^53)
 //   /counters/{candidates,majorant_updates,majorant_violations,rescales,histogram_samples} [R] uint64,
-//   /counters/pair_collisions [R x P] uint64 (P ordered species pairs), /counters/momentum_removed_relative [R]
+//   /counters/pair_collisions [R x P] uint64 (P ordered species pairs), /counters/momentum_removed_relative [R],
+//   /counters/energy_residual [R] (time-stepped gas)
 //   /temperature_ratio        scalar group with attributes mean, ci (two species only)
 //   /viscosity/               shear runs: attributes {eta_star, eta_kinetic_star, eta, eta_kinetic, eta_over_eta0,
 //                             eta_kinetic_over_eta0, drift}_{mean,ci}, steady, window_start;

@@ -1,5 +1,6 @@
 #include "io/run_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -293,6 +294,7 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
     report.majorant_updates += s.majorant_updates;
     report.majorant_violations += s.majorant_violations;
     report.rescales += s.rescales;
+    if (s.energy_residual) report.energy_residual = std::max(report.energy_residual.value_or(0.0), *s.energy_residual);
   }
   // T_1/T_2 as exp(ln T_1 - ln T_2), finite when both temperatures underflow in a long cooling run.
   if (result.species_names.size() == 2 && !result.times.empty())

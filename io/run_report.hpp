@@ -93,6 +93,7 @@ struct RunReport {
   std::uint64_t majorant_updates = 0;  // omega_max raises, all replicas
   std::uint64_t majorant_violations = 0;  // event scheme: candidates above their U_max, all replicas
   std::uint64_t rescales = 0;          // velocity rescalings, all replicas
+  std::optional<double> energy_residual;  // largest ReplicaSeries::energy_residual over the replicas
 
   /// T_1/T_2 over the last half of the samples (k >= (S-1)/2 with S sample times): per replica the time
   /// average of T_1/T_2, then the replica mean. Only for two species.

@@ -42,6 +42,7 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
   j["majorant_updates"] = report.majorant_updates;
   if (report.method == "event") j["majorant_violations"] = report.majorant_violations;
   j["rescales"] = report.rescales;
+  if (report.energy_residual) j["energy_residual_max"] = number(*report.energy_residual);
   j["threads"] = result.threads;
   j["version"] = granmc::version;
   j["times"] = numbers(result.times);

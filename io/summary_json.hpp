@@ -3,6 +3,7 @@
 // ("Summary"): scene, seed, replicas, method, wall_seconds, collisions, times, temperature {mean, ci},
 // species [{name, temperature {mean, ci}, a2 {mean, ci}}], temperature_ratio {mean, ci} (two species only).
 // Added: log_temperature {mean, ci}, momentum_relative {mean, ci}, candidates, majorant_updates, majorant_violations (event), rescales,
+// energy_residual_max (time-stepped gas: the steps' energy bookkeeping against a direct sum, rounding only),
 // threads, version, and theory {haff_temperature, a2, cooling_rate0, cooling_rate0_maxwell, chi, alpha,
 // collision_frequency0} when the scene is a monodisperse hard-sphere cooling state.
 //

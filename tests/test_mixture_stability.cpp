@@ -40,13 +40,16 @@ void expect_stable(const Scene& scene, const char* what) {
       // Centre-of-mass speed over rms speed: rounding only (about 1e-16 sqrt(collisions)).
       ASSERT_LT(rep.momentum_relative[k], 1e-12) << what << " at t = " << r.times[k];
     }
+    // The steps' energy bookkeeping against a direct sum (docs/physics.md, "Energy balance").
+    ASSERT_TRUE(rep.energy_residual.has_value()) << what;
+    EXPECT_LT(*rep.energy_residual, energy_balance_tolerance) << what;
     // The majorant is an estimate that grows when exceeded (000 sec. 3); in these states it must not run
     // away (it is held in units of the thermal speed).
     for (double growth : rep.majorant_growth) EXPECT_LT(growth, 4.0) << what;
-    std::printf("[ measured ] %s: %g collisions, %lu majorant updates, largest growth %.3f, |P| rel %.2g\n", what,
-                rep.collisions.back(), static_cast<unsigned long>(rep.majorant_updates),
+    std::printf("[ measured ] %s: %g collisions, %lu majorant updates, largest growth %.3f, |P| rel %.2g, "
+                "energy residual %.2g\n", what, rep.collisions.back(), static_cast<unsigned long>(rep.majorant_updates),
                 *std::max_element(rep.majorant_growth.begin(), rep.majorant_growth.end()),
-                rep.momentum_relative.back());
+                rep.momentum_relative.back(), *rep.energy_residual);
   }
 }
 

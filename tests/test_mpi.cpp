@@ -68,6 +68,10 @@ void expect_same(const ReplicaSeries& a, const ReplicaSeries& b) {
   EXPECT_TRUE(same_bytes(a.reduced_shear_rate, b.reduced_shear_rate));
   EXPECT_EQ(a.rescales, b.rescales);
   EXPECT_TRUE(same_bytes(a.momentum_removed_relative, b.momentum_removed_relative));
+  ASSERT_EQ(a.energy_residual.has_value(), b.energy_residual.has_value());
+  if (a.energy_residual) {
+    EXPECT_TRUE(same_bytes(*a.energy_residual, *b.energy_residual));
+  }
   ASSERT_EQ(a.intruder.has_value(), b.intruder.has_value());
   if (!a.intruder) return;
   const IntruderSeries &x = *a.intruder, &y = *b.intruder;
@@ -112,6 +116,7 @@ ReplicaSeries filled_replica(int r, bool intruder) {
   s.reduced_shear_rate = doubles(2);
   s.rescales = 15;
   s.momentum_removed_relative = 1e-300 * (r + 1);
+  if (!intruder) s.energy_residual = 1e-15 * (r + 1);
   if (intruder) {
     IntruderSeries in;
     in.velocity = doubles(6);

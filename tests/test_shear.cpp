@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "io/run_report.hpp"
@@ -123,8 +124,22 @@ TEST(Shear, ElasticDiluteGasHasTheNavierStokesViscosity) {
 TEST(Shear, ShiftedCollisionsConserveMomentum) {
   const Scene s = sheared_gas(0.7, 0.3, 1.0, 2, 4000);
   const RunResult result = run_scene(s, {});
-  for (const ReplicaSeries& r : result.replicas)
+  for (const ReplicaSeries& r : result.replicas) {
     for (double p : r.momentum_relative) EXPECT_LT(p, 1e-13);
+    // The shear map's heating and the shifted collisions' shear work are in the bookkeeping.
+    EXPECT_LT(r.energy_residual.value(), energy_balance_tolerance);
+  }
+}
+
+TEST(Shear, EnergyBookkeepingClosesWithEveryShearEffect) {
+  // Shear map, Enskog shift, Gaussian thermostat and 003's relaxation term together: each reports its
+  // energy change, so the tracked energy equals the summed one to rounding (docs/physics.md).
+  Scene s = sheared_gas(0.6, 0.2, 0.5, 2, 4000);
+  s.relaxation = true;
+  for (const ReplicaSeries& r : run_scene(s, {}).replicas) {
+    EXPECT_LT(r.energy_residual.value(), energy_balance_tolerance);
+    std::printf("[ measured ] energy residual %.2g\n", r.energy_residual.value());
+  }
 }
 
 TEST(Shear, LargeShearRateAtHighDensityStaysFinite) {
@@ -143,8 +158,10 @@ TEST(Shear, LargeShearRateAtHighDensityStaysFinite) {
     ASSERT_TRUE(std::isfinite(report.viscosity->pressure_xy.mean[k]));
   }
   EXPECT_LT(report.viscosity->pressure_xy.mean.back(), 0.0);  // momentum flows down the velocity gradient
-  for (const ReplicaSeries& r : result.replicas)
+  for (const ReplicaSeries& r : result.replicas) {
     for (double p : r.momentum_relative) EXPECT_LT(p, 1e-13);
+    EXPECT_LT(r.energy_residual.value(), energy_balance_tolerance);
+  }
 }
 
 TEST(Relaxation, ReplacesTheExpectedFractionWithTheCoolingStateDistribution) {

@@ -97,6 +97,8 @@ class Dsmc {
   [[nodiscard]] std::uint64_t rescales() const noexcept { return rescales_; }
   [[nodiscard]] double momentum_removed_relative() const noexcept { return momentum_removed_; }
   [[nodiscard]] const std::vector<double>& omega_max() const noexcept { return omega_max_; }
+  /// The energy bookkeeping of the steps, sum_i m_i sum_k |c_k|^2 in stored units (not summed over particles).
+  [[nodiscard]] double tracked_twice_energy() const noexcept { return twice_energy_; }
 
   /// The collisional transfer part of the pressure tensor over nT (000 eq. 18, n/(N dt) per collision of
   /// the sum of J sigma_ij sigma-hat sigma-hat; docs/physics.md derives the factor), averaged over the time
