@@ -140,6 +140,19 @@ bench: build
 bench-effects: build
 	cmake --build $(BUILD) --target bench-effects
 
+# Regression benchmarks (issue 10 item 4, perf/bench_compare.py, docs/performance.md): the ratios granmc / naive,
+# granmc / packed gather-scatter limit and effect / plain, compared with perf/baselines/baseline.json; fails
+# if one moved the wrong way by more than its threshold (10 %, or the floor for that ratio in the baseline).
+# BENCH_ROUNDS rounds of about 2 min each.
+# bench-baseline records a new baseline instead. JSON in $(BUILD)/bench-json.
+BENCH_ROUNDS ?= 3
+.PHONY: bench-compare bench-baseline
+bench-compare: build
+	$(PYTHON) perf/bench_compare.py --bin $(BUILD)/bin --rounds $(BENCH_ROUNDS)
+
+bench-baseline: build
+	$(PYTHON) perf/bench_compare.py --bin $(BUILD)/bin --rounds $(BENCH_ROUNDS) --save
+
 clean:
 	rm -rf $(BUILD) $(MPI_BUILD)
 
