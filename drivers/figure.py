@@ -2,14 +2,22 @@
 """Reproduce a paper figure: run granmc over a parameter sweep, compare with theory, plot, tabulate.
 
 Usage: /usr/bin/python3 drivers/figure.py FIGURE.toml [--granmc build/bin/granmc] [--out results/NAME]
-                                          [--threads N] [--only-theory]
+                                          [--threads N] [--mpi R] [--only-theory]
 
 A figure file (drivers/scenes/<paper>_fig<k>/figure.toml) names a base scene (a valid granmc scene in the
 same folder), the swept parameter, its simulated values, the curves (per curve: species overrides,
-`set` of dotted scene keys, or a base scene of its own) and what is plotted. For every simulated point the script writes the scene to OUT/points/, runs
-`granmc run` unless OUT/points/<point>.json already holds the result of exactly that scene text, and
-reads the summary. Theory lines come from `granmc theory` on a fine grid. Output: OUT/figure.png,
-OUT/table.md (simulation with CI against theory) and OUT/figure.json (all numbers).
+`set` of dotted scene keys, or a base scene of its own) and what is plotted. The script makes the scene of
+every simulated point, then runs all the points of one base scene as one `granmc sweep`
+(docs/scaling.md, "Sweeps"): each point is a [[scenes]] table of the dotted keys where its scene differs
+from the base (`"collision.restitution" = 0.7`, `"species[0].diameter" = 0.5`), written to
+OUT/points/sweep.toml with a copy of the base beside it (a curve with a base of its own gets
+OUT/points/<base stem>/). The sweep writes NAME.h5, NAME.json and index.json there; a rerun skips the
+points done with the same scene, and a killed run leaves no half-written point. Each point's summary is
+found through index.json by its values. `--mpi R` runs the sweeps as `mpirun -np R --oversubscribe granmc
+sweep ...`, spreading each point's replicas over R ranks; it needs the MPI build (`make mpi`, then
+`--granmc build-mpi/bin/granmc`). Theory lines come from `granmc theory` on a fine grid. Output:
+OUT/figure.png, OUT/table.md (simulation with CI against theory) and OUT/figure.json (all numbers, and
+each point's HDF5 file relative to OUT).
 
 Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.packing_fraction), and for two
 species "mu" (m_1/m_2), "omega" (sigma_1/sigma_2), "delta" (n_1/n_2, total density and particles kept).
@@ -28,6 +36,7 @@ import argparse
 import copy
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tomllib
@@ -116,30 +125,103 @@ def dense_shear_units(scene, phi):
     scene["run"]["t_end"] /= f
 
 
-def point_name(curve_index, x_name, x):
-    return f"curve{curve_index}_{x_name}{x:.4f}"
+# ---- running granmc: the points as one sweep per base scene, and theory -----------------------------------
+
+def same_value(a, b):
+    """Equal and of the same TOML type: 1 and 1.0, or true and 1, are different values in a scene."""
+    if isinstance(a, list) and isinstance(b, list):
+        return len(a) == len(b) and all(same_value(x, y) for x, y in zip(a, b))
+    return type(a) is type(b) and a == b
 
 
-# ---- running ----------------------------------------------------------------------------------------------
+def is_table_array(v):
+    return isinstance(v, list) and len(v) > 0 and all(isinstance(t, dict) for t in v)
 
-def run_point(granmc, scene, path_stem, threads):
-    """Runs granmc on the scene unless the summary of this exact scene text exists; returns the summary."""
-    text = toml_text(scene)
-    scene_path, summary_path = path_stem + ".toml", path_stem + ".json"
-    if os.path.exists(summary_path) and os.path.exists(scene_path):
-        with open(scene_path) as f:
-            if f.read() == text:
-                with open(summary_path) as g:
-                    return json.load(g)
-    with open(scene_path, "w") as f:
-        f.write(text)
-    cmd = [granmc, "run", scene_path, "--out", path_stem + ".h5", "--summary", summary_path, "--quiet"]
-    if threads:
-        cmd += ["--threads", str(threads)]
-    print("  run", os.path.basename(scene_path), flush=True)
+
+def sweep_values(base, scene, prefix=""):
+    """The dotted keys where `scene` differs from `base`, each with its value in `scene`: what a [[scenes]]
+    table of a sweep file sets on the base to make the scene (docs/scenes.md, "Sweep files"). Tables are
+    followed key by key (collision.restitution), [[species]] tables by index (species[1].mass), any other
+    value, an array too, is set whole. A difference no sweep can make stops the script."""
+    def cannot(what):
+        sys.exit(f"figure.py: a point's scene {what}; a sweep only sets values on the base scene")
+    values = {}
+    for key in base:
+        if key not in scene:
+            cannot(f"lacks {prefix}{key} of the base")
+    for key, v in scene.items():
+        dotted, old = prefix + key, base.get(key)
+        if isinstance(v, dict) and (old is None or isinstance(old, dict)):
+            if not v and old is None:
+                cannot(f"adds the empty table {dotted}")
+            values.update(sweep_values(old or {}, v, dotted + "."))
+        elif is_table_array(v) or is_table_array(old):
+            if not (is_table_array(v) and is_table_array(old) and len(v) == len(old)):
+                cannot(f"has another number of [[{dotted}]] tables than the base")
+            for i, (o, t) in enumerate(zip(old, v)):
+                values.update(sweep_values(o, t, f"{dotted}[{i}]."))
+        elif key not in base or not same_value(old, v):
+            values[dotted] = v
+    return values
+
+
+def values_key(values):
+    """The same text for the values of a point and for those index.json records of its sweep scene."""
+    return json.dumps(sorted(values.items()))
+
+
+def run_sweep(args, base_path, scenes, base, sweep_dir):
+    """Runs the scenes (point -> scene dict) as [[scenes]] of one sweep on the base scene file `base_path`
+    (parsed: `base`) in sweep_dir; returns point -> (summary, HDF5 path)."""
+    os.makedirs(sweep_dir, exist_ok=True)
+    base_name = os.path.basename(base_path)
+    shutil.copyfile(base_path, os.path.join(sweep_dir, base_name))  # `base` is relative to the sweep file
+    values = {point: sweep_values(base, scene) for point, scene in scenes.items()}
+    tables = {values_key(v): v for v in values.values()}  # points with the same scene run once
+    lines = [f"# Written by drivers/figure.py {args.figure}: one [[scenes]] table per simulated point.",
+             f"base = {json.dumps(base_name)}"]
+    for v in tables.values():
+        lines += ["", "[[scenes]]"] + [f"{json.dumps(k)} = {toml_value(x)}" for k, x in v.items()]
+    sweep_path = os.path.join(sweep_dir, "sweep.toml")
+    with open(sweep_path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    cmd = ["mpirun", "-np", str(args.mpi), "--oversubscribe"] if args.mpi else []
+    cmd += [args.granmc, "sweep", sweep_path, "--out-dir", sweep_dir]
+    if args.threads:
+        cmd += ["--threads", str(args.threads)]
+    print("  " + " ".join(cmd), flush=True)
     subprocess.run(cmd, check=True)
-    with open(summary_path) as g:
-        return json.load(g)
+    with open(os.path.join(sweep_dir, "index.json")) as f:
+        index = {values_key(s["values"]): s for s in json.load(f)["scenes"]}
+    out = {}
+    for point, v in values.items():
+        s = index.get(values_key(v), {"name": json.dumps(v), "status": "missing from index.json"})
+        if s["status"] != "done":
+            sys.exit(f"figure.py: {sweep_dir}: scene {s['name']} did not finish; rerun to resume")
+        with open(os.path.join(sweep_dir, s["summary"])) as f:
+            out[point] = (json.load(f), os.path.join(sweep_dir, s["hdf5"]))
+    return out
+
+
+def run_points(args, here, fig, curves, bases, scenes, out):
+    """Runs every point (curve index, x) -> scene: one sweep per base scene file, the figure's in OUT/points,
+    a curve's own in OUT/points/<its stem>. Returns point -> (summary, HDF5 path)."""
+    groups = {}  # base file -> (name in `bases`, {point: scene})
+    for (ci_, x), scene in scenes.items():
+        name = curves[ci_].get("base", "")
+        path = os.path.normpath(os.path.join(here, name or fig["base"]))
+        groups.setdefault(path, (name, {}))[1][(ci_, x)] = scene
+    figure_base = os.path.normpath(os.path.join(here, fig["base"]))
+    results, dirs = {}, set()
+    for path, (name, group) in groups.items():
+        sweep_dir = os.path.join(out, "points")
+        if path != figure_base:
+            sweep_dir = os.path.join(sweep_dir, os.path.splitext(os.path.basename(path))[0])
+        if sweep_dir in dirs:
+            sys.exit(f"figure.py: two curves' base scenes have the stem of {path}; rename one")
+        dirs.add(sweep_dir)
+        results.update(run_sweep(args, path, group, bases[name], sweep_dir))
+    return results
 
 
 def theory_of(granmc, scene, tmp_path):
@@ -228,7 +310,10 @@ def main():
     p.add_argument("figure")
     p.add_argument("--granmc", default="build/bin/granmc")
     p.add_argument("--out", default=None, help="output folder (default results/<figure folder name>)")
-    p.add_argument("--threads", type=int, default=0)
+    p.add_argument("--threads", type=int, default=0, help="OpenMP threads per process (default: all cores)")
+    p.add_argument("--mpi", type=int, default=0, metavar="R",
+                   help="run the sweeps under `mpirun -np R --oversubscribe`; needs the MPI build (`make mpi`, "
+                        "then --granmc build-mpi/bin/granmc)")
     p.add_argument("--only-theory", action="store_true", help="plot theory lines only, run nothing")
     args = p.parse_args()
 
@@ -241,11 +326,16 @@ def main():
         with open(os.path.join(here, name or fig["base"]), "rb") as f:
             bases[name] = tomllib.load(f)
     out = args.out or os.path.join("results", os.path.basename(here))
-    os.makedirs(os.path.join(out, "points"), exist_ok=True)
+    os.makedirs(out, exist_ok=True)
     x_name, y = fig["x"], fig["y"]
     x_values = [float(v) for v in fig["x_values"]]
     x_theory = np.linspace(*fig["x_theory"][:2], int(fig["x_theory"][2]))
     curves = spec["curve"]
+
+    runs = {}  # (curve index, x) -> (summary, HDF5 path)
+    if not args.only_theory:
+        scenes = {(ci_, x): point_scene(bases, curve, x_name, x) for ci_, curve in enumerate(curves) for x in x_values}
+        runs = run_points(args, here, fig, curves, bases, scenes, out)
 
     results = []
     for ci_, curve in enumerate(curves):
@@ -253,9 +343,9 @@ def main():
         pts = []
         if not args.only_theory:
             for x in x_values:
-                summary = run_point(args.granmc, point_scene(bases, curve, x_name, x),
-                                    os.path.join(out, "points", point_name(ci_, x_name, x)), args.threads)
+                summary, hdf5 = runs[(ci_, x)]
                 pts.append({"x": x, "sim": simulated(summary, y), "wall_seconds": summary["wall_seconds"],
+                            "hdf5": os.path.relpath(hdf5, out),
                             "theory": theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),
                                                             os.path.join(out, "theory.toml")), y)})
         lines = [theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),

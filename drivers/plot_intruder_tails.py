@@ -54,7 +54,7 @@ def main():
     fig_plot, (ax, ax_log) = plt.subplots(1, 2, figsize=(11, 4.5))
     for n, pt in enumerate(fig["curves"][0]["points"]):
         alpha = pt["x"]
-        path = os.path.join(args.out, "points", f"curve0_alpha{alpha:.4f}.h5")
+        path = os.path.join(args.out, pt["hdf5"])  # the sweep's output of this point (figure.py)
         with h5py.File(path, "r") as h:
             edges = h["intruder/speed_shell_edges"][()]
             counts = h["intruder/speed_counts"][()]          # R x K
