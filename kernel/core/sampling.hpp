@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "kernel/core/turn_sincos.hpp"
 #include "kernel/core/vec3.hpp"
 
 namespace granmc {
@@ -29,16 +30,16 @@ constexpr std::uint64_t uniform_index(std::uint32_t hi, std::uint32_t lo, std::u
 inline Vec3 unit_vector(double u1, double u2) noexcept {
   const double cos_theta = 2.0 * u1 - 1.0;
   const double sin_theta = std::sqrt(std::fma(-cos_theta, cos_theta, 1.0));
-  const double phi = 2.0 * std::numbers::pi * u2;
-  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+  const CosSin phi = turn_sincos(u2);  // azimuth 2 pi u2
+  return {sin_theta * phi.cos, sin_theta * phi.sin, cos_theta};
 }
 
 /// Two independent standard normals from two uniforms on (0, 1) (Box-Muller).
 inline void standard_normal_pair(double u1, double u2, double& z1, double& z2) noexcept {
   const double r = std::sqrt(-2.0 * std::log(u1));
-  const double phi = 2.0 * std::numbers::pi * u2;
-  z1 = r * std::cos(phi);
-  z2 = r * std::sin(phi);
+  const CosSin phi = turn_sincos(u2);  // angle 2 pi u2
+  z1 = r * phi.cos;
+  z2 = r * phi.sin;
 }
 
 }  // namespace granmc
