@@ -56,7 +56,7 @@ fig-003: build
 relaxation-bias-003: build
 	$(PYTHON) drivers/relaxation_bias.py --granmc $(GRANMC)
 
-# 000 Fig. 8 at omega = 0.5 and 1: eta* against the shear rate, extrapolated to a* -> 0 (about 30 min).
+# 000 Fig. 8 at omega = 0.5 and 1: eta* against the shear rate, extrapolated to a* -> 0 (about 60 min; resumes).
 fig-000-8-shear-rate: build
 	$(PYTHON) drivers/shear_rate_extrapolation.py drivers/scenes/000_fig8_shear_rate/omega0.5.toml \
 		drivers/scenes/000_fig8_shear_rate/omega1.toml --granmc $(GRANMC)
