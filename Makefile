@@ -136,7 +136,7 @@ mpi-test: mpi-configure
 bench: build
 	cmake --build $(BUILD) --target bench
 
-# Cost of each effect (issue 8 item 3, perf/bench_effects.cpp): ratios to the plain scene, about 70 s.
+# Cost of each effect (issue 8 item 3, perf/bench_effects.cpp): ratios to the plain scene, about 90 s.
 bench-effects: build
 	cmake --build $(BUILD) --target bench-effects
 
