@@ -388,7 +388,7 @@ def relative_to_curve(results, label):
         if c is ref:
             continue
         for pt, r in zip(c["points"], ref["points"]):
-            pt["sim"] = [(suf, m / rm, (m / rm) * np.hypot(e / m, re / rm))
+            pt["sim"] = [(suf, m / rm, abs(m / rm) * np.hypot(e / m, re / rm))  # a half-width, >= 0
                          for (suf, m, e), (_, rm, re) in zip(pt["sim"], r["sim"])]
             pt["theory"] = {k: [v / w for v, w in zip(vals, r["theory"][k])] for k, vals in pt["theory"].items()}
         c["theory"] = [{k: [v / w for v, w in zip(vals, rl[k])] for k, vals in line.items()}
