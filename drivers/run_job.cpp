@@ -77,7 +77,8 @@ JobResult run_job(const Scene& scene, const JobOutputs& outputs, int threads, bo
   options.replica_stride = at.size;
 
   const auto start = std::chrono::steady_clock::now();
-  const RunResult result = completed(run_scene(scene, options));
+  RunResult result = completed(run_scene(scene, options));
+  result.ranks = at.size;
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (at.rank != 0) return {wall, result.threads};  // rank 0 alone reports and writes

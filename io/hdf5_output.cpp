@@ -318,6 +318,7 @@ void write_contents(hid_t file, const Scene& scene, const RunResult& result, con
   w.attribute("/", "units", std::string(units_text));
   w.attribute("/", "wall_seconds", report.wall_seconds);
   w.attribute("/", "threads", static_cast<std::int64_t>(result.threads));
+  w.attribute("/", "ranks", static_cast<std::int64_t>(result.ranks));
   w.attribute("/", "particles", static_cast<std::int64_t>(total_particles(scene)));
 
   w.doubles("/times", result.times, "sample times t_k (scene time unit)");

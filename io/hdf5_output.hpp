@@ -4,7 +4,7 @@
 // when they apply. Layout (S sample times, R replicas; every dataset carries a `description` attribute):
 //
 //   /                         attributes scene, scene_path, seed, replicas, method, version, units,
-//                             wall_seconds, threads, particles
+//                             wall_seconds, threads, ranks, particles
 //   /times                    [S]
 //   /temperature/{mean,ci}    [S], /temperature/replicas [R x S]
 //   /log_temperature/{mean,ci} [S], /log_temperature/replicas [R x S]

@@ -44,6 +44,7 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
   j["rescales"] = report.rescales;
   if (report.energy_residual) j["energy_residual_max"] = number(*report.energy_residual);
   j["threads"] = result.threads;
+  j["ranks"] = result.ranks;
   j["version"] = granmc::version;
   j["times"] = numbers(result.times);
   j["temperature"] = mean_ci(report.temperature);

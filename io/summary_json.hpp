@@ -4,7 +4,7 @@
 // species [{name, temperature {mean, ci}, a2 {mean, ci}}], temperature_ratio {mean, ci} (two species only).
 // Added: log_temperature {mean, ci}, momentum_relative {mean, ci}, candidates, majorant_updates, majorant_violations (event), rescales,
 // energy_residual_max (time-stepped gas: the steps' energy bookkeeping against a direct sum, rounding only),
-// threads, version, and theory {haff_temperature, a2, cooling_rate0, cooling_rate0_maxwell, chi, alpha,
+// threads, ranks (MPI ranks, 1 without MPI), version, and theory {haff_temperature, a2, cooling_rate0, cooling_rate0_maxwell, chi, alpha,
 // collision_frequency0} when the scene is a monodisperse hard-sphere cooling state.
 //
 // JSON has no NaN or infinity: every non-finite number is written as null (e.g. a2 of a replica set whose

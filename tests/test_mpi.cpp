@@ -215,18 +215,19 @@ class MpiRun : public ::testing::Test {
 
   struct Way {
     std::string name, prefix, threads;
+    int ranks;  // recorded as "ranks" in the summary
   };
   /// One process on 1 and 2 threads (granmc started without mpirun: MPI's singleton, one rank), then
   /// mpirun with 2 ranks and, unless `few`, with 2 ranks of 2 threads, 3 ranks (5 replicas: 2, 2, 1) and
   /// 6 ranks (rank 5 runs no replica).
   static std::vector<Way> ways(bool few) {
-    std::vector<Way> w{{"one process, 1 thread", "", "1"},
-                       {"one process, 2 threads", "", "2"},
-                       {"mpirun -np 2, 1 thread", mpirun(2), "1"}};
+    std::vector<Way> w{{"one process, 1 thread", "", "1", 1},
+                       {"one process, 2 threads", "", "2", 1},
+                       {"mpirun -np 2, 1 thread", mpirun(2), "1", 2}};
     if (few) return w;
-    w.insert(w.end(), {{"mpirun -np 2, 2 threads", mpirun(2), "2"},
-                       {"mpirun -np 3, 1 thread", mpirun(3), "1"},
-                       {"mpirun -np 6 (a rank without replicas), 1 thread", mpirun(6), "1"}});
+    w.insert(w.end(), {{"mpirun -np 2, 2 threads", mpirun(2), "2", 2},
+                       {"mpirun -np 3, 1 thread", mpirun(3), "1", 3},
+                       {"mpirun -np 6 (a rank without replicas), 1 thread", mpirun(6), "1", 6}});
     return w;
   }
 
@@ -240,6 +241,7 @@ class MpiRun : public ::testing::Test {
                                           ".json --threads " + w.threads);
       ASSERT_EQ(o.status, 0) << w.name << "\n" << o.out << o.err;
       EXPECT_EQ(std::count(o.out.begin(), o.out.end(), '\n'), 1) << w.name << ": one closing line\n" << o.out;
+      EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / (stem + ".json")))["ranks"], w.ranks) << w.name;
       outputs.push_back(stem);
     }
     std::vector<std::string> expected_files{"scene.toml"};
@@ -268,6 +270,7 @@ class MpiRun : public ::testing::Test {
     nlohmann::json j = nlohmann::json::parse(slurp(dir_ / (stem + ".json")));
     j.erase("wall_seconds");
     j.erase("threads");
+    j.erase("ranks");
     return j;
   }
 
@@ -298,7 +301,7 @@ class MpiRun : public ::testing::Test {
               [](hid_t loc, const char* attr_name, const H5A_info_t*, void* d) -> herr_t {
                 auto& a = *static_cast<Attrs*>(d);
                 const std::string n(attr_name);
-                if (a.object == "/" && (n == "wall_seconds" || n == "threads")) return 0;
+                if (a.object == "/" && (n == "wall_seconds" || n == "threads" || n == "ranks")) return 0;
                 const hid_t attr = H5Aopen(loc, attr_name, H5P_DEFAULT);
                 (*a.items)[a.object + "@" + n] = read_attribute(attr);
                 H5Aclose(attr);

@@ -82,7 +82,8 @@ struct RunResult {
   std::vector<double> times;               // sample times
   std::vector<std::string> species_names;
   std::vector<ReplicaSeries> replicas;     // in replica order
-  int threads = 1;
+  int threads = 1;                         // OpenMP threads (of rank 0 over MPI)
+  int ranks = 1;                           // MPI ranks the replicas were spread over (1 without MPI)
 };
 
 }  // namespace granmc
