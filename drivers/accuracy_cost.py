@@ -30,7 +30,7 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from figure import run_point  # noqa: E402
+from scene_run import run_point  # noqa: E402
 
 LAMBDA_P = 3.2
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "accuracy")

@@ -16,7 +16,7 @@ import sys
 import tomllib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from figure import run_point  # noqa: E402
+from scene_run import run_point  # noqa: E402
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "accuracy")
 

@@ -29,7 +29,7 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from figure import run_point  # noqa: E402  (same caching and scene writing as the figure sweeps)
+from scene_run import run_point  # noqa: E402  (cached by scene text)
 
 PAPER_TABLES = {  # 001 Tables 1 and 2: n -> (E_max, ||V||_inf)
     "1": {64: (0.895e-1, 0.672e-2), 256: (0.235e-1, 0.516e-2), 1024: (0.571e-2, 0.211e-2),
