@@ -3,8 +3,6 @@
 // outputs atomically (SCENES.md, "Command line").
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,43 +10,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/granmc_process.hpp"
+
 namespace fs = std::filesystem;
+using granmc_test::Outcome;
+using granmc_test::slurp;
 
 namespace {
 
-struct Outcome {
-  int status = -1;
-  std::string stderr_text;
-  std::string stdout_text;
-};
-
-class Cli : public ::testing::Test {
+class Cli : public granmc_test::GranmcDirectory {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(::testing::TempDir()) / ("granmc_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
-
-  /// Runs granmc with `args` in the test directory.
-  Outcome granmc(const std::string& args) {
-    const std::string cmd = "cd '" + dir_.string() + "' && '" GRANMC_EXECUTABLE "' " + args + " >stdout.txt 2>stderr.txt";
-    const int raw = std::system(cmd.c_str());
-    Outcome o;
-    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    o.stderr_text = slurp(dir_ / "stderr.txt");
-    o.stdout_text = slurp(dir_ / "stdout.txt");
-    fs::remove(dir_ / "stderr.txt");
-    fs::remove(dir_ / "stdout.txt");
-    return o;
-  }
+  Cli() : GranmcDirectory("granmc_cli_") {}
 
   /// Files in the test directory other than the scenes we wrote.
   std::vector<std::string> outputs() const {
@@ -58,12 +30,6 @@ class Cli : public ::testing::Test {
     return names;
   }
 
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
-
-  fs::path dir_;
 };
 
 const std::string good_scene = R"([run]

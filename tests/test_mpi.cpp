@@ -6,8 +6,6 @@
 // OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) for it (tests/CMakeLists.txt), as OpenMPI refuses root without them.
 #include <gtest/gtest.h>
 #include <hdf5.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,11 +21,14 @@
 #include <vector>
 
 #include "drivers/mpi_replicas.hpp"
+#include "tests/granmc_process.hpp"
 
 namespace granmc {
 namespace {
 
 namespace fs = std::filesystem;
+using granmc_test::Outcome;
+using granmc_test::slurp;
 
 // --- the round trip ---
 
@@ -164,47 +165,13 @@ TEST(MpiReplicas, MalformedMessagesThrow) {
 
 // --- granmc under mpirun against one process ---
 
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-class MpiRun : public ::testing::Test {
+class MpiRun : public granmc_test::GranmcDirectory {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("granmc_mpi_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-  }
-
-  /// Runs `prefix granmc args` in the test directory.
-  Outcome run(const std::string& prefix, const std::string& args) {
-    const std::string cmd =
-        "cd '" + dir_.string() + "' && " + prefix + " '" GRANMC_EXECUTABLE "' " + args + " >stdout.txt 2>stderr.txt";
-    const int raw = std::system(cmd.c_str());
-    Outcome o;
-    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    o.out = slurp(dir_ / "stdout.txt");
-    o.err = slurp(dir_ / "stderr.txt");
-    fs::remove(dir_ / "stdout.txt");
-    fs::remove(dir_ / "stderr.txt");
-    return o;
-  }
+  MpiRun() : GranmcDirectory("granmc_mpi_") {}
 
   static std::string mpirun(int ranks) {
     return std::string("'" GRANMC_MPIEXEC "' -np ") + std::to_string(ranks) + " --oversubscribe";
   }
-
-  void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name, std::ios::binary) << text; }
 
   std::vector<std::string> files() const {
     std::vector<std::string> names;
@@ -237,10 +204,10 @@ class MpiRun : public ::testing::Test {
     for (std::size_t k = 0; k < ways.size(); ++k) {
       const Way& w = ways[k];
       const std::string stem = "run" + std::to_string(k);
-      const Outcome o = run(w.prefix, "run scene.toml --seed 77 --out " + stem + ".h5 --summary " + stem +
-                                          ".json --threads " + w.threads);
-      ASSERT_EQ(o.status, 0) << w.name << "\n" << o.out << o.err;
-      EXPECT_EQ(std::count(o.out.begin(), o.out.end(), '\n'), 1) << w.name << ": one closing line\n" << o.out;
+      const Outcome o = granmc(
+          "run scene.toml --seed 77 --out " + stem + ".h5 --summary " + stem + ".json --threads " + w.threads, w.prefix);
+      ASSERT_EQ(o.status, 0) << w.name << "\n" << o.stdout_text << o.stderr_text;
+      EXPECT_EQ(std::count(o.stdout_text.begin(), o.stdout_text.end(), '\n'), 1) << w.name << ": one closing line\n" << o.stdout_text;
       EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / (stem + ".json")))["ranks"], w.ranks) << w.name;
       outputs.push_back(stem);
     }
@@ -357,8 +324,6 @@ class MpiRun : public ::testing::Test {
     H5Tclose(type);
     return bytes;
   }
-
-  fs::path dir_;
 };
 
 /// A monodisperse hard-sphere cooling state: 5 replicas of 2000 particles, t_end 1, dt 0.01, 10 samples.
@@ -410,27 +375,27 @@ histogram = { shells = 20, radius = 5.0 }
 
 TEST_F(MpiRun, BadSceneStopsEveryRankWithOneMessage) {
   write("scene.toml", cooling_scene + "[shear]\nrate = \"fast\"\n");
-  const Outcome o = run(mpirun(2), "run scene.toml --out bad.h5");
-  EXPECT_EQ(o.status, 2) << o.out << o.err;
-  const std::string first_line = o.err.substr(0, o.err.find('\n'));
-  EXPECT_NE(first_line.find("scene.toml"), std::string::npos) << o.err;
-  EXPECT_EQ(o.err.find(first_line, first_line.size()), std::string::npos) << "printed twice:\n" << o.err;
+  const Outcome o = granmc("run scene.toml --out bad.h5", mpirun(2));
+  EXPECT_EQ(o.status, 2) << o.stdout_text << o.stderr_text;
+  const std::string first_line = o.stderr_text.substr(0, o.stderr_text.find('\n'));
+  EXPECT_NE(first_line.find("scene.toml"), std::string::npos) << o.stderr_text;
+  EXPECT_EQ(o.stderr_text.find(first_line, first_line.size()), std::string::npos) << "printed twice:\n" << o.stderr_text;
   EXPECT_EQ(files(), std::vector<std::string>{"scene.toml"});
 }
 
 TEST_F(MpiRun, TheoryAndExplainPrintOnce) {
   write("scene.toml", cooling_scene);
-  const Outcome theory = run(mpirun(2), "theory scene.toml");
-  ASSERT_EQ(theory.status, 0) << theory.err;
-  EXPECT_TRUE(nlohmann::json::accept(theory.out)) << theory.out;
-  const Outcome explain = run(mpirun(2), "run scene.toml --explain");
-  ASSERT_EQ(explain.status, 0) << explain.err;
+  const Outcome theory = granmc("theory scene.toml", mpirun(2));
+  ASSERT_EQ(theory.status, 0) << theory.stderr_text;
+  EXPECT_TRUE(nlohmann::json::accept(theory.stdout_text)) << theory.stdout_text;
+  const Outcome explain = granmc("run scene.toml --explain", mpirun(2));
+  ASSERT_EQ(explain.status, 0) << explain.stderr_text;
   const std::string kernel_line = "kernel       dsmc<";
-  const auto first = explain.out.find(kernel_line);
-  EXPECT_NE(first, std::string::npos) << explain.out;
-  EXPECT_EQ(explain.out.find(kernel_line, first + 1), std::string::npos) << explain.out;
-  EXPECT_NE(explain.out.find("ranks        2 MPI ranks"), std::string::npos) << explain.out;
-  EXPECT_NE(explain.out.find("rank 0 runs 3 of the 5 replicas"), std::string::npos) << explain.out;
+  const auto first = explain.stdout_text.find(kernel_line);
+  EXPECT_NE(first, std::string::npos) << explain.stdout_text;
+  EXPECT_EQ(explain.stdout_text.find(kernel_line, first + 1), std::string::npos) << explain.stdout_text;
+  EXPECT_NE(explain.stdout_text.find("ranks        2 MPI ranks"), std::string::npos) << explain.stdout_text;
+  EXPECT_NE(explain.stdout_text.find("rank 0 runs 3 of the 5 replicas"), std::string::npos) << explain.stdout_text;
   EXPECT_EQ(files(), std::vector<std::string>{"scene.toml"});
 }
 

@@ -23,15 +23,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/granmc_process.hpp"
+
 namespace fs = std::filesystem;
+using granmc_test::Outcome;
+using granmc_test::slurp;
 
 namespace {
-
-struct Outcome {
-  int status = -1;
-  std::string stderr_text;
-  std::string stdout_text;
-};
 
 const std::string base_scene = R"([run]
 t_end = 0.5
@@ -44,34 +42,9 @@ particles = 500
 restitution = 0.9
 )";
 
-class Sweep : public ::testing::Test {
+class Sweep : public granmc_test::GranmcDirectory {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(::testing::TempDir()) /
-           ("granmc_sweep_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
-
-  /// Runs granmc with `args` in the test directory.
-  Outcome granmc(const std::string& args) {
-    const std::string cmd = "cd '" + dir_.string() + "' && '" GRANMC_EXECUTABLE "' " + args + " >stdout.txt 2>stderr.txt";
-    const int raw = std::system(cmd.c_str());
-    Outcome o;
-    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    o.stderr_text = slurp(dir_ / "stderr.txt");
-    o.stdout_text = slurp(dir_ / "stdout.txt");
-    fs::remove(dir_ / "stderr.txt");
-    fs::remove(dir_ / "stdout.txt");
-    return o;
-  }
+  Sweep() : GranmcDirectory("granmc_sweep_") {}
 
   /// The names of the files in `sub` of the test directory.
   std::set<std::string> files(const std::string& sub) const {
@@ -83,12 +56,6 @@ class Sweep : public ::testing::Test {
 
   nlohmann::json json(const std::string& name) const { return nlohmann::json::parse(slurp(dir_ / name)); }
 
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
-
-  fs::path dir_;
 };
 
 /// `text` with `from` replaced by `to`.
