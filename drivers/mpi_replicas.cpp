@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace granmc::mpi {
@@ -14,54 +15,112 @@ namespace {
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_trivially_copyable_v<Vec3>);
 static_assert(sizeof(SymTensor) == 6 * sizeof(double) && std::is_trivially_copyable_v<SymTensor>);
 #if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
-// Tripwire: a field added to these structs (kernel/observe/gas_series.hpp) must be added to write_replica
-// and read_replica below (and to the round trip in tests/test_mpi.cpp); then update the sizes.
+// Tripwire: a field added to these structs (kernel/observe/gas_series.hpp) must be added to the field lists
+// below (and to the round trip in tests/test_mpi.cpp); then update the sizes.
 static_assert(sizeof(SpeciesSeries) == 120, "SpeciesSeries changed: serialise the new field");
 static_assert(sizeof(IntruderSeries) == 144, "IntruderSeries changed: serialise the new field");
 static_assert(sizeof(ReplicaSeries) == 480, "ReplicaSeries changed: serialise the new field");
 #endif
 
-void write_species(ByteWriter& out, const SpeciesSeries& s) {
-  out.array(s.temperature);
-  out.array(s.log_temperature);
-  out.array(s.a2);
-  out.array(s.a3);
-  out.array(s.speed_counts);
+// One list of the fields of each series, in message order, serves both directions: `io` is Put (writes the
+// field) or Get (reads into it), so writing and reading cannot disagree. Optionals go as a flag byte and,
+// for the intruder, the series when present; the energy residual always sends its value (0 when absent).
+template <class Io, class S>
+void species_fields(Io& io, S& s) {
+  io(s.temperature);
+  io(s.log_temperature);
+  io(s.a2);
+  io(s.a3);
+  io(s.speed_counts);
 }
 
-SpeciesSeries read_species(ByteReader& in) {
-  SpeciesSeries s;
-  s.temperature = in.array<double>();
-  s.log_temperature = in.array<double>();
-  s.a2 = in.array<double>();
-  s.a3 = in.array<double>();
-  s.speed_counts = in.array<double>();
-  return s;
+template <class Io, class S>
+void intruder_fields(Io& io, S& s) {
+  io(s.velocity);
+  io(s.speed_counts);
+  io(s.sampling_attempts);
+  io(s.velocity_y);
+  io(s.angular_velocity);
+  io(s.angular_counts);
+  io(s.newton_iterations);
+  io(s.bisection_fallbacks);
 }
 
-void write_intruder(ByteWriter& out, const IntruderSeries& s) {
-  out.array(s.velocity);
-  out.array(s.speed_counts);
-  out.value(s.sampling_attempts);
-  out.array(s.velocity_y);
-  out.array(s.angular_velocity);
-  out.array(s.angular_counts);
-  out.value(s.newton_iterations);
-  out.value(s.bisection_fallbacks);
+template <class Io, class S>
+void replica_fields(Io& io, S& s) {
+  io(s.temperature);
+  io(s.log_temperature);
+  io(s.species);
+  io(s.momentum);
+  io(s.momentum_relative);
+  io(s.collisions);
+  io(s.pair_collisions);
+  io(s.histogram_samples);
+  io(s.candidates);
+  io(s.majorant_updates);
+  io(s.majorant_violations);
+  io(s.majorant_growth);
+  io(s.pressure_kinetic);
+  io(s.pressure_collisional);
+  io(s.reduced_shear_rate);
+  io(s.rescales);
+  io(s.momentum_removed_relative);
+  io(s.energy_residual);
+  io(s.intruder);
 }
 
-IntruderSeries read_intruder(ByteReader& in) {
-  IntruderSeries s;
-  s.velocity = in.array<double>();
-  s.speed_counts = in.array<double>();
-  s.sampling_attempts = in.value<std::uint64_t>();
-  s.velocity_y = in.array<double>();
-  s.angular_velocity = in.array<double>();
-  s.angular_counts = in.array<double>();
-  s.newton_iterations = in.value<std::uint64_t>();
-  s.bisection_fallbacks = in.value<std::uint64_t>();
-  return s;
-}
+struct Put {
+  ByteWriter& out;
+  template <class T>
+  void operator()(const T& v) {
+    out.value(v);
+  }
+  template <class T>
+  void operator()(const std::vector<T>& v) {
+    out.array(v);
+  }
+  void operator()(const std::vector<SpeciesSeries>& species) {
+    out.value(static_cast<std::uint64_t>(species.size()));
+    for (const SpeciesSeries& sp : species) species_fields(*this, sp);
+  }
+  void operator()(const std::optional<double>& v) {
+    out.value(static_cast<std::uint8_t>(v.has_value()));
+    out.value(v.value_or(0.0));
+  }
+  void operator()(const std::optional<IntruderSeries>& v) {
+    out.value(static_cast<std::uint8_t>(v.has_value()));
+    if (v) intruder_fields(*this, *v);
+  }
+};
+
+struct Get {
+  ByteReader& in;
+  template <class T>
+  void operator()(T& v) {
+    v = in.value<T>();
+  }
+  template <class T>
+  void operator()(std::vector<T>& v) {
+    v = in.array<T>();
+  }
+  void operator()(std::vector<SpeciesSeries>& species) {
+    const auto n = in.value<std::uint64_t>();  // one at a time: a corrupt count fails at the end of the bytes
+    for (std::uint64_t i = 0; i < n; ++i) species_fields(*this, species.emplace_back());
+  }
+  void operator()(std::optional<double>& v) {
+    const bool present = flag("energy residual");
+    const double value = in.value<double>();
+    if (present) v = value;
+  }
+  void operator()(std::optional<IntruderSeries>& v) {
+    if (flag("intruder")) intruder_fields(*this, v.emplace());
+  }
+  bool flag(const char* what) {
+    const auto f = in.value<std::uint8_t>();
+    if (f > 1) throw std::runtime_error(std::string("replica message: bad ") + what + " flag");
+    return f == 1;
+  }
+};
 
 /// How many of `replicas` replicas a rank with this offset and stride runs.
 std::size_t own_count(std::size_t replicas, int offset, int stride) {
@@ -80,57 +139,14 @@ constexpr int tag_replicas = 1;
 }  // namespace
 
 void write_replica(ByteWriter& out, const ReplicaSeries& s) {
-  out.array(s.temperature);
-  out.array(s.log_temperature);
-  out.value(static_cast<std::uint64_t>(s.species.size()));
-  for (const SpeciesSeries& sp : s.species) write_species(out, sp);
-  out.array(s.momentum);
-  out.array(s.momentum_relative);
-  out.array(s.collisions);
-  out.array(s.pair_collisions);
-  out.value(s.histogram_samples);
-  out.value(s.candidates);
-  out.value(s.majorant_updates);
-  out.value(s.majorant_violations);
-  out.array(s.majorant_growth);
-  out.array(s.pressure_kinetic);
-  out.array(s.pressure_collisional);
-  out.array(s.reduced_shear_rate);
-  out.value(s.rescales);
-  out.value(s.momentum_removed_relative);
-  out.value(static_cast<std::uint8_t>(s.energy_residual.has_value()));
-  out.value(s.energy_residual.value_or(0.0));
-  out.value(static_cast<std::uint8_t>(s.intruder.has_value()));
-  if (s.intruder) write_intruder(out, *s.intruder);
+  Put put{out};
+  replica_fields(put, s);
 }
 
 ReplicaSeries read_replica(ByteReader& in) {
   ReplicaSeries s;
-  s.temperature = in.array<double>();
-  s.log_temperature = in.array<double>();
-  const auto species = in.value<std::uint64_t>();
-  for (std::uint64_t i = 0; i < species; ++i) s.species.push_back(read_species(in));
-  s.momentum = in.array<Vec3>();
-  s.momentum_relative = in.array<double>();
-  s.collisions = in.array<double>();
-  s.pair_collisions = in.array<std::uint64_t>();
-  s.histogram_samples = in.value<std::uint64_t>();
-  s.candidates = in.value<std::uint64_t>();
-  s.majorant_updates = in.value<std::uint64_t>();
-  s.majorant_violations = in.value<std::uint64_t>();
-  s.majorant_growth = in.array<double>();
-  s.pressure_kinetic = in.array<SymTensor>();
-  s.pressure_collisional = in.array<SymTensor>();
-  s.reduced_shear_rate = in.array<double>();
-  s.rescales = in.value<std::uint64_t>();
-  s.momentum_removed_relative = in.value<double>();
-  const auto has_energy_residual = in.value<std::uint8_t>();
-  const double energy_residual = in.value<double>();
-  if (has_energy_residual > 1) throw std::runtime_error("replica message: bad energy residual flag");
-  if (has_energy_residual) s.energy_residual = energy_residual;
-  const auto has_intruder = in.value<std::uint8_t>();
-  if (has_intruder > 1) throw std::runtime_error("replica message: bad intruder flag");
-  if (has_intruder) s.intruder = read_intruder(in);
+  Get get{in};
+  replica_fields(get, s);
   return s;
 }
 
