@@ -17,7 +17,6 @@ and OUT/shear_rate.png.
 import argparse
 import json
 import os
-import re
 import subprocess
 import tempfile
 
@@ -33,7 +32,7 @@ def window_mean_shear_rate(v):
 
 
 def points_of(sweep_dir):
-    """(alpha, a*, eta*, sigma of eta*, scene values) per finished scene of a sweep's index."""
+    """(alpha, a*, eta*, sigma of eta*, HDF5 file) per finished scene of a sweep's index."""
     with open(os.path.join(sweep_dir, "index.json")) as f:
         index = json.load(f)
     points = []
@@ -43,7 +42,7 @@ def points_of(sweep_dir):
         with open(os.path.join(sweep_dir, s["summary"])) as f:
             v = json.load(f)["viscosity"]
         points.append((s["values"]["collision.restitution"], window_mean_shear_rate(v), v["eta_star"]["mean"],
-                       v["eta_star"]["ci"] / LAMBDA_P, s["values"]))
+                       v["eta_star"]["ci"] / LAMBDA_P, os.path.join(sweep_dir, s["hdf5"])))
     return points
 
 
@@ -57,16 +56,13 @@ def fit_intercept(a_star, eta, sigma):
     return float(b[0]), float(np.sqrt(cov[0, 0])), float(b[1])
 
 
-def theory(granmc, base_text, values):
-    """First-Sonine eta* and eta(alpha)/eta(1) for the base scene with the sweep's values set."""
-    text = base_text
-    for key, value in values.items():
-        if key == "species[0].diameter":  # the first [[species]] table's diameter
-            text = re.sub(r"(\[\[species\]\][^\[]*?diameter = )[0-9.eE+-]+", rf"\g<1>{value}", text, count=1)
-        elif key in ("collision.restitution", "shear.rate"):
-            text = re.sub(rf"(?m)^{key.split('.')[1]} = .*$", f"{key.split('.')[1]} = {value}", text)
+def theory(granmc, hdf5):
+    """First-Sonine eta* and eta(alpha)/eta(1) of the scene a sweep ran (the text its HDF5 file stores)."""
+    import h5py
+    with h5py.File(hdf5, "r") as h:
+        text = h.attrs["scene"]
     with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(text)
+        f.write(text if isinstance(text, str) else text.decode())
     try:
         out = subprocess.run([granmc, "theory", f.name], check=True, capture_output=True, text=True).stdout
     finally:
@@ -94,8 +90,6 @@ def main():
         stem = os.path.splitext(os.path.basename(sweep))[0]
         sweep_dir = os.path.join(args.out, stem)
         subprocess.run([args.granmc, "sweep", sweep, "--out-dir", sweep_dir], check=True)
-        with open(os.path.join(os.path.dirname(sweep), "base.toml")) as f:
-            base_text = f.read()
         points = points_of(sweep_dir)
         alphas = sorted({pt[0] for pt in points}, reverse=True)
         lines += [f"## {stem}", "",
@@ -107,7 +101,7 @@ def main():
             pts = sorted([pt for pt in points if pt[0] == alpha], key=lambda pt: pt[1])
             a_star, eta, sig = [pt[1] for pt in pts], [pt[2] for pt in pts], [pt[3] for pt in pts]
             b0, s0, c = fit_intercept(a_star, eta, sig)
-            th_star, th_ratio = theory(args.granmc, base_text, pts[0][4])
+            th_star, th_ratio = theory(args.granmc, pts[0][4])
             fits[alpha] = (b0, s0, c, th_star, th_ratio, pts)
             x = np.asarray(a_star) ** 2
             shown = ax.errorbar(x, eta, yerr=LAMBDA_P * np.asarray(sig), fmt="o", label=f"alpha = {alpha}")
