@@ -24,7 +24,7 @@ GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& mome
   return t;
 }
 
-void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram) {
+GasTotals observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram) {
   const double n = total_density(scene);
   // Temperatures and cumulants are of the peculiar velocity, about the mixture's flow velocity: zero to
   // rounding where collisions conserve momentum, but not under white noise (001 eq. 13, Remark 1).
@@ -56,6 +56,7 @@ void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& serie
   series.log_temperature.push_back(log_t);
   series.momentum.push_back(state.scale.u() * totals.momentum);
   series.momentum_relative.push_back(norm(totals.momentum) / std::sqrt(totals.mass * totals.twice_energy));
+  return totals;
 }
 
 }  // namespace granmc

@@ -9,10 +9,6 @@
 
 namespace granmc {
 
-/// Appends one observation of `state` to `series` (series.species must have one entry per species); with
-/// `histogram`, also adds the scaled speeds to each species' speed_counts.
-void observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram);
-
 /// The moments of every species of `state` about `centre` (stored units), in species order.
 std::vector<SpeciesMoments> gas_moments(const GasState& state, const Vec3& centre = {});
 
@@ -24,5 +20,10 @@ struct GasTotals {
 };
 /// (The moments must be about the origin.)
 GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& moments) noexcept;
+
+/// Appends one observation of `state` to `series` (series.species must have one entry per species); with
+/// `histogram`, also adds the scaled speeds to each species' speed_counts. Returns the totals it summed
+/// (stored units), for checks the caller makes on the same state.
+GasTotals observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram);
 
 }  // namespace granmc

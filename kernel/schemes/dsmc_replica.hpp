@@ -21,10 +21,9 @@ ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const 
   series.species.resize(scene.species.size());
   for (std::size_t k = 0; k < times.size(); ++k) {
     sim.advance_to(times[k]);
-    observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
-    const double summed = gas_totals(scene, gas_moments(sim.state())).twice_energy;
+    const GasTotals summed = observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
     series.energy_residual = std::max(series.energy_residual.value_or(0.0),
-                                      std::abs(sim.tracked_twice_energy() / summed - 1.0));
+                                      std::abs(sim.tracked_twice_energy() / summed.twice_energy - 1.0));
     if constexpr (Dsmc<Kernel, Effects...>::sheared) {
       series.pressure_kinetic.push_back(reduced_kinetic_pressure(scene, sim.state()));
       series.pressure_collisional.push_back(sim.take_collisional_pressure());
