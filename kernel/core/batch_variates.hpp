@@ -1,0 +1,123 @@
+#pragma once
+// The conversions of core/sampling.hpp over arrays of N uniforms at once, in SIMD registers (xsimd). A
+// scheme that knows its next N draws ahead (their random words depend on the draw's counter only)
+// prepares their exponentials, normals and directions here, so the logs, square roots and polynomials run
+// several lanes wide instead of one candidate at a time (docs/performance.md, "Event scheme").
+//
+// Same formulas as the scalar versions: the directions and the angles of Box-Muller are turn_reduce of
+// core/turn_sincos.hpp with identical operations, so directions agree bit for bit. The logarithm is
+// xsimd's, within 1 ulp of libm's; xsimd's pow is within about 20 ulp (tests/test_numerics.cpp measures
+// all three), a relative error of 5e-15 in an acceptance probability.
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <type_traits>
+
+// GCC 12 warns inside its own AVX-512 headers (the _mm512_undefined_* idiom) wherever xsimd inlines them.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <xsimd/xsimd.hpp>
+#pragma GCC diagnostic pop
+
+#include "kernel/core/turn_sincos.hpp"
+
+namespace granmc {
+
+using SimdDouble = xsimd::batch<double>;  // the widest registers the build targets
+
+namespace detail {
+
+/// x y + z rounded once, as std::fma (so that directions agree bit for bit with unit_vector). xsimd 8.1's
+/// fma is fused for the FMA3 instruction sets but not for AVX-512, whose kernels inherit AVX2's; there the
+/// instruction is called directly. Without FMA3, lane by lane through std::fma.
+/// (A template, so that the branches for other instruction sets are not compiled.)
+template <class Arch>
+inline xsimd::batch<double, Arch> fused_multiply_add(const xsimd::batch<double, Arch>& x,
+                                                     const xsimd::batch<double, Arch>& y,
+                                                     const xsimd::batch<double, Arch>& z) noexcept {
+  using Batch = xsimd::batch<double, Arch>;
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+    return _mm512_fmadd_pd(x, y, z);
+  } else if constexpr (std::is_base_of_v<xsimd::fma3<xsimd::sse4_2>, Arch> ||
+                       std::is_base_of_v<xsimd::fma3<xsimd::avx>, Arch> ||
+                       std::is_base_of_v<xsimd::fma3<xsimd::avx2>, Arch>) {
+    return xsimd::fma(x, y, z);
+  } else {
+    alignas(64) double a[Batch::size], b[Batch::size], c[Batch::size];
+    x.store_aligned(a);
+    y.store_aligned(b);
+    z.store_aligned(c);
+    for (std::size_t k = 0; k < Batch::size; ++k) a[k] = std::fma(a[k], b[k], c[k]);
+    return Batch::load_aligned(a);
+  }
+}
+
+/// (cos, sin)(2 pi t) lane by lane: turn_reduce, then the rotation by the quadrant q pi / 2 through
+/// selects (the scalar version's table of signs, without a gather).
+inline void turn_sincos_lanes(const SimdDouble& t, SimdDouble& cos, SimdDouble& sin) noexcept {
+  const TurnReduced<SimdDouble> r = turn_reduce(t);
+  const SimdDouble m = r.quadrant - 4.0 * xsimd::floor(0.25 * r.quadrant);  // q mod 4, exact
+  const SimdDouble one(1.0), zero(0.0);
+  const SimdDouble a = xsimd::select(m == 0.0, one, zero) - xsimd::select(m == 2.0, one, zero);
+  const SimdDouble b = xsimd::select(m == 1.0, one, zero) - xsimd::select(m == 3.0, one, zero);
+  cos = a * r.cos_theta - b * r.sin_theta;
+  sin = b * r.cos_theta + a * r.sin_theta;
+}
+
+template <std::size_t N>
+constexpr void require_whole_registers() noexcept {
+  static_assert(N % SimdDouble::size == 0, "array lengths must be a multiple of the SIMD width");
+}
+
+}  // namespace detail
+
+/// u := -log(u) for u in (0, 1): exponential variates with mean 1.
+template <std::size_t N>
+inline void negative_log_in_place(std::span<double, N> u) noexcept {
+  detail::require_whole_registers<N>();
+  for (std::size_t k = 0; k < N; k += SimdDouble::size)
+    (-xsimd::log(SimdDouble::load_unaligned(&u[k]))).store_unaligned(&u[k]);
+}
+
+/// u := u^p for u in (0, 1).
+template <std::size_t N>
+inline void power_in_place(std::span<double, N> u, double p) noexcept {
+  detail::require_whole_registers<N>();
+  for (std::size_t k = 0; k < N; k += SimdDouble::size)
+    xsimd::pow(SimdDouble::load_unaligned(&u[k]), SimdDouble(p)).store_unaligned(&u[k]);
+}
+
+/// Box-Muller (as standard_normal_pair) lane by lane: two independent standard normals z1[k], z2[k]
+/// from the uniforms u1[k], u2[k] on (0, 1).
+template <std::size_t N>
+inline void standard_normal_pairs(std::span<const double, N> u1, std::span<const double, N> u2,
+                                  std::span<double, N> z1, std::span<double, N> z2) noexcept {
+  detail::require_whole_registers<N>();
+  for (std::size_t k = 0; k < N; k += SimdDouble::size) {
+    const SimdDouble r = xsimd::sqrt(-2.0 * xsimd::log(SimdDouble::load_unaligned(&u1[k])));
+    SimdDouble c, s;
+    detail::turn_sincos_lanes(SimdDouble::load_unaligned(&u2[k]), c, s);
+    (r * c).store_unaligned(&z1[k]);
+    (r * s).store_unaligned(&z2[k]);
+  }
+}
+
+/// Directions uniform on the sphere (as unit_vector) lane by lane, from the uniforms u1[k], u2[k]:
+/// cos(theta) = 2 u1 - 1, azimuth 2 pi u2.
+template <std::size_t N>
+inline void unit_vectors(std::span<const double, N> u1, std::span<const double, N> u2, std::span<double, N> x,
+                         std::span<double, N> y, std::span<double, N> z) noexcept {
+  detail::require_whole_registers<N>();
+  for (std::size_t k = 0; k < N; k += SimdDouble::size) {
+    const SimdDouble cos_theta = 2.0 * SimdDouble::load_unaligned(&u1[k]) - 1.0;
+    const SimdDouble sin_theta = xsimd::sqrt(detail::fused_multiply_add(-cos_theta, cos_theta, SimdDouble(1.0)));
+    SimdDouble c, s;
+    detail::turn_sincos_lanes(SimdDouble::load_unaligned(&u2[k]), c, s);
+    (sin_theta * c).store_unaligned(&x[k]);
+    (sin_theta * s).store_unaligned(&y[k]);
+    cos_theta.store_unaligned(&z[k]);
+  }
+}
+
+}  // namespace granmc
