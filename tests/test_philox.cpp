@@ -1,7 +1,9 @@
 // Philox streams: reproducible, distinct by (seed, replica) and by purpose; exact variate conversions.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <set>
 
 #include "kernel/core/philox_stream.hpp"
@@ -81,4 +83,25 @@ TEST(Sampling, BoxMullerGivesUnitNormals) {
   EXPECT_NEAR(m1 / N, 0.0, 5 / std::sqrt(N));
   EXPECT_NEAR(m2 / N, 1.0, 5 * std::sqrt(2.0 / N));
   EXPECT_NEAR(m4 / N, 3.0, 5 * std::sqrt(96.0 / N));  // Var(z^4) = 105 - 9
+}
+
+TEST(Philox, LaneWiseBlocksAreRandom123s) {
+  // RandomStream::blocks against block() word for word, over counters that fill every field, including
+  // steps and indices above 2^32 and the top of their 2^48 range.
+  constexpr std::size_t lanes = 64;
+  const RandomStream s(2026, 12);
+  for (std::uint64_t trial = 0; trial < 4096; ++trial) {
+    std::array<std::uint64_t, lanes> step, index;
+    for (std::size_t k = 0; k < lanes; ++k) {
+      const RandomBlock r = s.block(RngPurpose::initial_velocity, 0, trial, k);
+      step[k] = ((std::uint64_t{r[0]} << 32) | r[1]) % RandomStream::counter_limit;
+      index[k] = k % 3 == 0 ? RandomStream::counter_limit - 1 - k : ((std::uint64_t{r[2]} << 32) | r[3]) >> 16;
+    }
+    const auto sub = static_cast<std::uint16_t>(trial % 7);
+    const RandomBlocks<lanes> b = s.blocks(RngPurpose::event_candidate, sub, step, index);
+    for (std::size_t k = 0; k < lanes; ++k) {
+      const RandomBlock one = s.block(RngPurpose::event_candidate, sub, step[k], index[k]);
+      for (std::size_t w = 0; w < 4; ++w) ASSERT_EQ(b.word[w][k], one[w]) << trial << " " << k << " " << w;
+    }
+  }
 }

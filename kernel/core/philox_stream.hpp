@@ -8,6 +8,7 @@
 // step low 32 bits, step high 16 | index high 16 << 16, purpose | sub << 16), so step and index each
 // range over 2^48 values.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include <Random123/philox.h>
@@ -17,6 +18,12 @@
 namespace granmc {
 
 using RandomBlock = std::array<std::uint32_t, 4>;
+
+/// N blocks as four arrays of words: word[w][k] is word w of block k.
+template <std::size_t N>
+struct RandomBlocks {
+  std::array<std::array<std::uint32_t, N>, 4> word;
+};
 
 class RandomStream {
  public:
@@ -37,6 +44,40 @@ class RandomStream {
                                            static_cast<std::uint32_t>(purpose) | (std::uint32_t{sub} << 16)}};
     const auto r = r123::Philox4x32{}(c, key_);
     return {r[0], r[1], r[2], r[3]};
+  }
+
+  /// Block k at (purpose, sub, step[k], index[k]) for k < N: the same values as block(), with the ten
+  /// Philox rounds run over the N counters as arrays, which the compiler vectorizes (Random123's round
+  /// function, Salmon et al. SC'11, written lane-wise; tests/test_philox.cpp checks every word).
+  template <std::size_t N>
+  [[nodiscard]] RandomBlocks<N> blocks(RngPurpose purpose, std::uint16_t sub, const std::array<std::uint64_t, N>& step,
+                                       const std::array<std::uint64_t, N>& index) const noexcept {
+    RandomBlocks<N> c;
+    const std::uint32_t last = static_cast<std::uint32_t>(purpose) | (std::uint32_t{sub} << 16);
+    for (std::size_t k = 0; k < N; ++k) {
+      c.word[0][k] = lo(index[k]);
+      c.word[1][k] = lo(step[k]);
+      c.word[2][k] = (hi(step[k]) & 0xFFFFu) | (hi(index[k]) << 16);
+      c.word[3][k] = last;
+    }
+    std::uint32_t k0 = key_[0], k1 = key_[1];
+    for (int round = 0; round < 10; ++round) {
+      if (round > 0) {  // bump the key (Weyl sequence)
+        k0 += 0x9E3779B9u;
+        k1 += 0xBB67AE85u;
+      }
+      for (std::size_t k = 0; k < N; ++k) {
+        const std::uint64_t p0 = std::uint64_t{0xD2511F53u} * c.word[0][k];
+        const std::uint64_t p1 = std::uint64_t{0xCD9E8D57u} * c.word[2][k];
+        const std::uint32_t w0 = static_cast<std::uint32_t>(p1 >> 32) ^ c.word[1][k] ^ k0;
+        const std::uint32_t w2 = static_cast<std::uint32_t>(p0 >> 32) ^ c.word[3][k] ^ k1;
+        c.word[1][k] = static_cast<std::uint32_t>(p1);
+        c.word[3][k] = static_cast<std::uint32_t>(p0);
+        c.word[0][k] = w0;
+        c.word[2][k] = w2;
+      }
+    }
+    return c;
   }
 
  private:

@@ -121,26 +121,35 @@ class EventWhiteNoise {
     const SpeciesStore& store = state_.species[0];
     std::array<double, batch_size> e1, e2;
     std::array<double, 3 * batch_size> u1, u2;
+    // Blocks 0 and 1 of draw first + k are lanes 2k and 2k + 1 (blocks 2 and 3 likewise in `normals`).
+    std::array<std::uint64_t, 2 * batch_size> step, index;
+    for (std::size_t k = 0; k < 2 * batch_size; ++k) {
+      step[k] = first + k / 2;
+      index[k] = k % 2;
+    }
+    const RandomBlocks<2 * batch_size> b = rng_.blocks(RngPurpose::event_candidate, 0, step, index);
     for (std::size_t k = 0; k < batch_size; ++k) {
-      const std::uint64_t d = first + k;
-      const RandomBlock b0 = rng_.block(RngPurpose::event_candidate, 0, d, 0);
-      const RandomBlock b1 = rng_.block(RngPurpose::event_candidate, 0, d, 1);
-      batch.wait[k] = uniform_open(b0[0]);
-      batch.i[k] = uniform_index(b0[1], b0[2], particles_);  // step 2.3
-      const std::size_t j = uniform_index(b1[0], b1[1], particles_ - 1);
+      const std::size_t b0 = 2 * k, b1 = 2 * k + 1;
+      const auto& w = b.word;
+      batch.wait[k] = uniform_open(w[0][b0]);
+      batch.i[k] = uniform_index(w[1][b0], w[2][b0], particles_);  // step 2.3
+      const std::size_t j = uniform_index(w[0][b1], w[1][b1], particles_ - 1);
       batch.j[k] = j + (j >= batch.i[k] ? 1 : 0);  // step 2.4: uniform on j != i
-      batch.threshold[k] = uniform_open(b0[3]);
-      e1[k] = uniform_open(b1[2]);
-      e2[k] = uniform_open(b1[3]);
-      if (noise_ != 0.0) {
-        const RandomBlock z0 = rng_.block(RngPurpose::event_candidate, 0, d, 2);
-        const RandomBlock z1 = rng_.block(RngPurpose::event_candidate, 0, d, 3);
-        for (std::size_t p = 0; p < 3; ++p) {
-          const RandomBlock& z = p < 2 ? z0 : z1;
-          const std::size_t w = p < 2 ? 2 * p : 0;
-          u1[3 * k + p] = uniform_open(z[w]);
-          u2[3 * k + p] = uniform_open(z[w + 1]);
-        }
+      batch.threshold[k] = uniform_open(w[3][b0]);
+      e1[k] = uniform_open(w[2][b1]);
+      e2[k] = uniform_open(w[3][b1]);
+    }
+    if (noise_ != 0.0) {
+      for (std::size_t k = 0; k < 2 * batch_size; ++k) index[k] = 2 + k % 2;
+      const RandomBlocks<2 * batch_size> normals = rng_.blocks(RngPurpose::event_candidate, 0, step, index);
+      const auto& z = normals.word;
+      for (std::size_t k = 0; k < batch_size; ++k) {  // pairs (z0[0], z0[1]), (z0[2], z0[3]), (z1[0], z1[1])
+        u1[3 * k] = uniform_open(z[0][2 * k]);
+        u2[3 * k] = uniform_open(z[1][2 * k]);
+        u1[3 * k + 1] = uniform_open(z[2][2 * k]);
+        u2[3 * k + 1] = uniform_open(z[3][2 * k]);
+        u1[3 * k + 2] = uniform_open(z[0][2 * k + 1]);
+        u2[3 * k + 2] = uniform_open(z[1][2 * k + 1]);
       }
     }
     // Prefetches back to back: issued between the Philox rounds, each waited for its address translation
@@ -181,12 +190,18 @@ class EventWhiteNoise {
   void bring_all_to(SpeciesStore& store, double t) const noexcept {
     std::array<double, 2 * batch_size> u1, u2, z1, z2;
     for (std::size_t first = 0; first < particles_; first += batch_size) {
+      std::array<std::uint64_t, batch_size> step, index;
       for (std::size_t k = 0; k < batch_size; ++k) {
-        const RandomBlock z = rng_.block(RngPurpose::brownian_sync, 0, syncs_, first + k);
-        u1[2 * k] = uniform_open(z[0]);
-        u2[2 * k] = uniform_open(z[1]);
-        u1[2 * k + 1] = uniform_open(z[2]);
-        u2[2 * k + 1] = uniform_open(z[3]);
+        step[k] = syncs_;
+        index[k] = first + k;
+      }
+      const RandomBlocks<batch_size> blocks = rng_.blocks(RngPurpose::brownian_sync, 0, step, index);
+      const auto& z = blocks.word;
+      for (std::size_t k = 0; k < batch_size; ++k) {
+        u1[2 * k] = uniform_open(z[0][k]);
+        u2[2 * k] = uniform_open(z[1][k]);
+        u1[2 * k + 1] = uniform_open(z[2][k]);
+        u2[2 * k + 1] = uniform_open(z[3][k]);
       }
       standard_normal_pairs(std::span<const double, 2 * batch_size>(u1), std::span<const double, 2 * batch_size>(u2),
                             std::span(z1), std::span(z2));
