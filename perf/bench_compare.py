@@ -15,13 +15,20 @@ so that they share the state of the (shared, noisy) machine:
                                        same N: the collision kernel against the packed-record gather/scatter
                                        limit. Two programs, run back to back at each size (bench_collisions at
                                        N, then bench_layout at N), so not the same run    (higher is better)
+  event_maxwell_over_packed_limit/1e5, /1e7
+  event_hard_sphere_over_packed_limit/1e5, /1e7
+                                       bench_event: the event scheme of 001 (examples 7 and 8, one replica)
+                                       event_maxwell or event_hard_sphere candidates/s over
+                                       layout_packed_prefetch pairs/s at the same N; bench_event runs right
+                                       after bench_layout at each size                    (higher is better)
   effect_over_plain/<scene>            bench_effects: time per candidate of a scene / of plain (one run, 5
                                        repetitions interleaved at random), one per scene     (lower is better)
   plain_over_hand                      bench_effects: plain / hand_specialised time per candidate
                                                                                                (lower is better)
 
-Order of one round: bench_collisions at 10^5, bench_layout (packed + prefetch only) at 10^5, the same two at
-10^7, then bench_effects (all scenes). Repetitions: each program's default (3, 3 and 5) unless --repetitions.
+Order of one round: bench_collisions at 10^5, bench_layout (packed + prefetch only) at 10^5, bench_event
+(event_maxwell and event_hard_sphere, not the event_sync_* parts) at 10^5, the same three at 10^7, then
+bench_effects (all scenes). Repetitions: each program's default (3, 3, 3 and 5) unless --repetitions.
 --rounds K runs K rounds (DIR/round1 ... DIR/roundK) and takes each ratio's median over the rounds.
 
 Without --save it compares the ratios with the baseline (perf/baselines/baseline.json) and prints a table; a
@@ -53,15 +60,17 @@ import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_BASELINE = os.path.join(REPO, "perf", "baselines", "baseline.json")
-PROGRAMS = ("bench_collisions", "bench_layout", "bench_effects")
+PROGRAMS = ("bench_collisions", "bench_layout", "bench_event", "bench_effects")
 INTERLEAVE = "--benchmark_enable_random_interleaving=true"
 # One round: (program, part, --benchmark_filter or None, extra flags), in this order. One size at a time, so
 # that no program rebuilds its 10^7-particle state between interleaved repetitions.
 ROUND = (
     ("bench_collisions", "1e5", "^(granmc|naive)_collide/100000$", (INTERLEAVE,)),
     ("bench_layout", "1e5", "^layout_packed_prefetch/100000$", ()),
+    ("bench_event", "1e5", "^event_(maxwell|hard_sphere)/100000$", ()),
     ("bench_collisions", "1e7", "^(granmc|naive)_collide/10000000$", (INTERLEAVE,)),
     ("bench_layout", "1e7", "^layout_packed_prefetch/10000000$", ()),
+    ("bench_event", "1e7", "^event_(maxwell|hard_sphere)/10000000$", ()),  # not interleaved: one 10^7 gas at a time
     ("bench_effects", "all", None, ()),  # its defaults: 5 repetitions, interleaved
 )
 DEFAULT_THRESHOLD = 0.10
@@ -72,11 +81,13 @@ DEFAULT_THRESHOLD = 0.10
 DEFAULT_RATIO_THRESHOLDS = {
     "granmc_over_naive/1e7": 0.40,
     "granmc_over_packed_limit/*": 0.30,
+    "event_*_over_packed_limit/*": 0.30,
     "effect_over_plain/*": 0.20,
     "plain_over_hand": 0.20,
 }
 
 SIZES = {"1e5": "100000", "1e7": "10000000"}
+EVENT_KERNELS = ("maxwell", "hard_sphere")  # bench_event's event_<kernel>/N
 EFFECT_COUNTER = "time/cand"
 EFFECT_PLAIN = "plain"
 EFFECT_HAND = "hand_specialised"
@@ -170,6 +181,13 @@ def compute_ratios(runs):
                    ("bench_layout", f"layout_packed_prefetch/{n}", "pairs/s")),
             "higher", f"granmc_collide candidates/s / layout_packed_prefetch pairs/s at N = {tag} "
                       "(bench_collisions, then bench_layout)")
+    for kernel in EVENT_KERNELS:
+        for tag, n in SIZES.items():
+            put(f"event_{kernel}_over_packed_limit/{tag}",
+                _ratio(runs, ("bench_event", f"event_{kernel}/{n}", "candidates/s"),
+                       ("bench_layout", f"layout_packed_prefetch/{n}", "pairs/s")),
+                "higher", f"event_{kernel} candidates/s / layout_packed_prefetch pairs/s at N = {tag} "
+                          "(bench_layout, then bench_event)")
     effects = runs.get("bench_effects", {}).get("medians", {})
     for scene in sorted(effects):
         if scene in (EFFECT_PLAIN, EFFECT_HAND) or EFFECT_COUNTER not in effects[scene]:
@@ -370,6 +388,14 @@ def self_test():
         "bench_layout": {"layout_packed_prefetch/100000": {"pairs/s": 150e6},
                          "layout_packed_prefetch/10000000": {"pairs/s": 38e6},
                          "layout_soa/100000": {"pairs/s": 80e6}},
+        "bench_event": {"event_maxwell/100000": {"candidates/s": 15e6, "collisions/s": 15e6, "acceptance": 1.0},
+                        "event_hard_sphere/100000": {"candidates/s": 10e6, "collisions/s": 1.8e6,
+                                                     "acceptance": 0.18},
+                        "event_maxwell/10000000": {"candidates/s": 6.65e6, "collisions/s": 6.65e6,
+                                                   "acceptance": 1.0},
+                        "event_hard_sphere/10000000": {"candidates/s": 7.6e6, "collisions/s": 1.3e6,
+                                                       "acceptance": 0.17},
+                        "event_sync_maxwell/10000000": {"particles/s": 66e6}},
         "bench_effects": {"plain": {"time/cand": 80e-9}, "white_noise": {"time/cand": 840e-9},
                           "shear": {"time/cand": 100e-9}, "hand_specialised": {"time/cand": 78e-9},
                           "white_noise_apply": {"time/particle": 74e-9}},
@@ -397,7 +423,13 @@ def self_test():
     names = {"granmc_over_naive/1e5", "granmc_over_naive/1e7", "granmc_over_packed_limit/1e5",
              "granmc_over_packed_limit/1e7", "effect_over_plain/white_noise", "effect_over_plain/shear",
              "plain_over_hand"}
+    event_names = {f"event_{k}_over_packed_limit/{tag}" for k in EVENT_KERNELS for tag in SIZES}
+    names |= event_names
     check(set(base_ratios) == names, f"the ratios are {sorted(names)} (got {sorted(base_ratios)})")
+    check(abs(base_ratios["event_hard_sphere_over_packed_limit/1e7"]["value"] - 0.2) < 1e-12 and
+          abs(base_ratios["event_maxwell_over_packed_limit/1e5"]["value"] - 0.1) < 1e-12,
+          "event_hard_sphere_over_packed_limit/1e7 = 7.6e6 / 38e6, "
+          "event_maxwell_over_packed_limit/1e5 = 15e6 / 150e6")
     check(abs(base_ratios["granmc_over_naive/1e7"]["value"] - 2.0) < 1e-12, "granmc_over_naive/1e7 = 10e6 / 5e6")
     check(abs(base_ratios["effect_over_plain/white_noise"]["value"] - 10.5) < 1e-12,
           "effect_over_plain/white_noise = 840 / 80")
@@ -418,7 +450,17 @@ def self_test():
         (("bench_collisions", "granmc_collide/100000", "candidates/s", 1.5), False, "granmc 50 % faster: improved, "
          "not flagged", set()),
         (("bench_layout", "layout_packed_prefetch/10000000", "pairs/s", 1.2), True,
-         "the limit 20 % faster (granmc the same): flagged", {"granmc_over_packed_limit/1e7"}),
+         "the limit 20 % faster (granmc and event the same): the three 1e7 limit ratios flagged",
+         {"granmc_over_packed_limit/1e7", "event_maxwell_over_packed_limit/1e7",
+          "event_hard_sphere_over_packed_limit/1e7"}),
+        (("bench_event", "event_hard_sphere/10000000", "candidates/s", 0.8), True,
+         "event hard spheres 20 % slower at 1e7: flagged", {"event_hard_sphere_over_packed_limit/1e7"}),
+        (("bench_event", "event_maxwell/100000", "candidates/s", 0.8), True,
+         "event Maxwell 20 % slower at 1e5: flagged", {"event_maxwell_over_packed_limit/1e5"}),
+        (("bench_event", "event_maxwell/100000", "collisions/s", 0.5), False,
+         "event collisions/s halved, candidates/s the same: not flagged", set()),
+        (("bench_event", "event_sync_maxwell/10000000", "particles/s", 0.5), False,
+         "event_sync_* 50 % slower: no ratio, not flagged", set()),
         (("bench_effects", "shear", "time/cand", 1.2), True, "shear 20 % slower than plain: flagged",
          {"effect_over_plain/shear"}),
         (("bench_effects", "shear", "time/cand", 0.8), False, "shear 20 % faster: not flagged", set()),
@@ -444,6 +486,28 @@ def self_test():
     check(compare(own, slower, threshold=0.35)[1] is False, "a larger --threshold wins over a per-ratio one")
     check(own["thresholds"].items() <= make_baseline([], base_ratios, old=own)["thresholds"].items(),
           "--save keeps the per-ratio thresholds of the baseline it replaces")
+    defaults = dict(baseline, thresholds=DEFAULT_RATIO_THRESHOLDS)
+    for factor, want in ((0.75, False), (0.65, True)):
+        rows, flagged = compare(defaults, ratios_of(altered("bench_event", "event_hard_sphere/100000",
+                                                            "candidates/s", factor)))
+        thr = {r[0]: r[2] for r in rows}["event_hard_sphere_over_packed_limit/1e5"]
+        check(flagged is want and thr == 0.30, f"event hard spheres {100 * (1 - factor):.0f} % slower at 1e5, "
+              f"default threshold of the event limit ratios 30 %: flagged {want} (threshold {thr})")
+    # A baseline recorded before bench_event (no event ratios, no threshold for them): they are new.
+    before_event = dict(baseline, ratios={k: v for k, v in baseline["ratios"].items() if k not in event_names},
+                        thresholds={k: v for k, v in DEFAULT_RATIO_THRESHOLDS.items() if not k.startswith("event")})
+    rows, flagged = compare(before_event, base_ratios)
+    status = {r[0]: r[6] for r in rows}
+    check(not flagged and all(status[n] == "new" for n in event_names) and len(rows) == len(names),
+          "a baseline without the event ratios: they are shown as new, nothing flagged")
+    m = json.loads(json.dumps(medians))
+    del m["bench_event"]
+    rows, flagged = compare(before_event, ratios_of(m))
+    check(not flagged and not any(r[0] in event_names for r in rows),
+          "no bench_event JSON and a baseline without the event ratios: not flagged")
+    rows, flagged = compare(baseline, ratios_of(m))
+    check(flagged and {r[0] for r in rows if r[6] == "MISSING"} == event_names,
+          "no bench_event JSON but the event ratios in the baseline: the four are MISSING, flagged")
 
     m = json.loads(json.dumps(medians))
     del m["bench_effects"]["shear"]
