@@ -6,7 +6,8 @@
 // Same algorithm and random-number layout as collide_step<HardSphere> (kernel/schemes/collision_stage.hpp,
 // 000 sec. 3): candidate s of step t uses Philox block (collision_pair, 0, t, 2 s) for the indices k and
 // l != k, block 2 s + 1 for the direction (words 0, 1) and the acceptance uniform (word 2); candidates
-// are drawn in batches of 64 with their records prefetched, then processed in order. The result is the
+// are drawn in batches of 64 (Philox over the batch's counters as arrays, directions in SIMD) with their
+// records prefetched back to back, then processed in order. The result is the
 // same bits as collide_step on the same state and seed (checked at the start of bench_effects).
 //
 // What it leaves out of the generic stage: the pair table (the constants are locals), the interleaving
@@ -16,11 +17,14 @@
 // buffer, since that layout is a separate, measured choice (perf/bench_layout.cpp). Not used by the
 // library.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <span>
 
 #include "kernel/core/aligned_buffer.hpp"
+#include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/vec3.hpp"
@@ -59,24 +63,33 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   double majorant = omega_max;
   HandTally t;
   std::uint64_t ks[batch], ls[batch];
-  RandomBlock draws[batch];
+  std::uint32_t accept_word[batch];
+  std::array<double, batch> dir1, dir2, sx, sy, sz;
+  std::array<std::uint64_t, 2 * batch> steps, index;
+  steps.fill(step);
   for (std::uint64_t s0 = 0; s0 < candidates; s0 += batch) {
     const std::uint64_t m = std::min(batch, candidates - s0);
+    for (std::uint64_t k = 0; k < 2 * batch; ++k) index[k] = 2 * s0 + k;
+    const RandomBlocks<2 * batch> blocks = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
+    const auto& w = blocks.word;
     for (std::uint64_t b = 0; b < m; ++b) {
-      const std::uint64_t s = s0 + b;
-      const RandomBlock pick = rng.block(RngPurpose::collision_pair, 0, step, 2 * s);
-      draws[b] = rng.block(RngPurpose::collision_pair, 0, step, 2 * s + 1);
-      const std::uint64_t k = uniform_index(pick[0], pick[1], n);
-      std::uint64_t l = uniform_index(pick[2], pick[3], n - 1);
-      if (l >= k) ++l;  // uniform over the other n - 1
+      const std::uint64_t k = uniform_index(w[0][2 * b], w[1][2 * b], n);
+      std::uint64_t l = uniform_index(w[2][2 * b], w[3][2 * b], n - 1);
+      l += static_cast<std::uint64_t>(l >= k);  // uniform over the other n - 1
       ks[b] = k;
       ls[b] = l;
-      __builtin_prefetch(v + k, 1, 3);
-      __builtin_prefetch(v + l, 1, 3);
+      dir1[b] = uniform_open(w[0][2 * b + 1]);
+      dir2[b] = uniform_open(w[1][2 * b + 1]);
+      accept_word[b] = w[2][2 * b + 1];
     }
     for (std::uint64_t b = 0; b < m; ++b) {
-      const RandomBlock& d = draws[b];
-      const Vec3 s = unit_vector(uniform_open(d[0]), uniform_open(d[1]));
+      __builtin_prefetch(v + ks[b], 1, 3);
+      __builtin_prefetch(v + ls[b], 1, 3);
+    }
+    unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(sx),
+                 std::span(sy), std::span(sz));
+    for (std::uint64_t b = 0; b < m; ++b) {
+      const Vec3 s{sx[b], sy[b], sz[b]};
       HandRecord& a = v[ks[b]];
       HandRecord& e = v[ls[b]];
       const double gx = a.x - e.x, gy = a.y - e.y, gz = a.z - e.z;
@@ -86,7 +99,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       if (omega > majorant) {
         majorant = omega;  // majorant exceeded: accept and update (000 sec. 3)
         ++t.majorant_updates;
-      } else if (uniform_open(d[2]) * majorant > omega) {
+      } else if (uniform_open(accept_word[b]) * majorant > omega) {
         continue;
       }
       const double h = 0.5 * (one_plus_alpha * g_sigma);  // equal masses: mu = 1/2

@@ -20,7 +20,9 @@
 #include <xsimd/xsimd.hpp>
 #pragma GCC diagnostic pop
 
+#include "kernel/core/sampling.hpp"
 #include "kernel/core/turn_sincos.hpp"
+#include "kernel/core/vec3.hpp"
 
 namespace granmc {
 
@@ -103,13 +105,14 @@ inline void standard_normal_pairs(std::span<const double, N> u1, std::span<const
   }
 }
 
-/// Directions uniform on the sphere (as unit_vector) lane by lane, from the uniforms u1[k], u2[k]:
-/// cos(theta) = 2 u1 - 1, azimuth 2 pi u2.
+/// Directions uniform on the sphere lane by lane, from the uniforms u1[k], u2[k]: cos(theta) = 2 u1 - 1,
+/// azimuth 2 pi u2. The same bits as unit_vector, so any N: a remainder past the last whole register is
+/// done by unit_vector itself.
 template <std::size_t N>
 inline void unit_vectors(std::span<const double, N> u1, std::span<const double, N> u2, std::span<double, N> x,
                          std::span<double, N> y, std::span<double, N> z) noexcept {
-  detail::require_whole_registers<N>();
-  for (std::size_t k = 0; k < N; k += SimdDouble::size) {
+  constexpr std::size_t whole = N - N % SimdDouble::size;
+  for (std::size_t k = 0; k < whole; k += SimdDouble::size) {
     const SimdDouble cos_theta = 2.0 * SimdDouble::load_unaligned(&u1[k]) - 1.0;
     const SimdDouble sin_theta = xsimd::sqrt(detail::fused_multiply_add(-cos_theta, cos_theta, SimdDouble(1.0)));
     SimdDouble c, s;
@@ -117,6 +120,12 @@ inline void unit_vectors(std::span<const double, N> u1, std::span<const double, 
     (sin_theta * c).store_unaligned(&x[k]);
     (sin_theta * s).store_unaligned(&y[k]);
     cos_theta.store_unaligned(&z[k]);
+  }
+  for (std::size_t k = whole; k < N; ++k) {
+    const Vec3 e = unit_vector(u1[k], u2[k]);
+    x[k] = e.x;
+    y[k] = e.y;
+    z[k] = e.z;
   }
 }
 

@@ -18,6 +18,7 @@
 // `Shift` is the relative velocity at contact: NoCollisionShift (V_k - V_l) or, for shear in the Enskog
 // gas, collide/enskog_shear_shift.hpp, which also tallies the shear work and the collisional transfer.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -25,6 +26,7 @@
 #include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/sym_tensor.hpp"
@@ -72,16 +74,22 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
     cumulative[k] = std::numeric_limits<std::int64_t>::max();
   std::uint64_t ks[batch], ls[batch];
   std::uint8_t qs[batch];
-  RandomBlock draws[batch];
+  std::uint32_t accept_word[batch];
+  std::array<double, batch> dir1, dir2, sx, sy, sz;
+  std::array<std::uint64_t, 2 * batch> steps, index;
+  steps.fill(state.step);
   for (std::uint64_t s0 = 0; s0 < total; s0 += batch) {
     const std::uint64_t m = std::min(batch, total - s0);
+    // Blocks 2s and 2s + 1 of the batch's candidates s, all at once (lanes 2b and 2b + 1; past the end of
+    // the step in the last batch, unused).
+    for (std::uint64_t k = 0; k < 2 * batch; ++k) index[k] = 2 * s0 + k;
+    const RandomBlocks<2 * batch> blocks = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
+    const auto& w = blocks.word;
     for (std::uint64_t b = 0; b < m; ++b) {
-      const std::uint64_t s = s0 + b;
-      const RandomBlock pick = rng.block(RngPurpose::collision_pair, 0, state.step, 2 * s);
-      draws[b] = rng.block(RngPurpose::collision_pair, 0, state.step, 2 * s + 1);
+      const std::uint64_t s = s0 + b, pick = 2 * b, draw = 2 * b + 1;
       std::size_t q = 0;
       if constexpr (!one_pair) {  // the next candidate's pair, without replacement: a uniformly random interleaving
-        const double r = uniform_open(draws[b][3]) * static_cast<double>(total - s);
+        const double r = uniform_open(w[3][draw]) * static_cast<double>(total - s);
         // q = the number of cumulative counts <= r, without branches (a loop here mispredicted 0.86 times
         // per candidate, callgrind, docs/performance.md). r < total - s = candidates left, so q is a pair
         // with candidates left. The same q as subtracting the counts from r one by one: r < 2^53, so r minus
@@ -94,21 +102,30 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
       const bool same_species = p.i == p.j;
       const std::uint64_t na = state.species[p.i].size();
       const std::uint64_t nb = same_species ? na - 1 : state.species[p.j].size();
-      ks[b] = uniform_index(pick[0], pick[1], na);
-      ls[b] = uniform_index(pick[2], pick[3], nb);
+      ks[b] = uniform_index(w[0][pick], w[1][pick], na);
+      ls[b] = uniform_index(w[2][pick], w[3][pick], nb);
       // Uniform over the other N_i - 1 particles; branch-free: a branch here is taken half the time at
       // random, and its mispredictions discard the overlapped work of the next candidates.
       ls[b] += static_cast<std::uint64_t>(same_species & (ls[b] >= ks[b]));
+      dir1[b] = uniform_open(w[0][draw]);
+      dir2[b] = uniform_open(w[1][draw]);
+      accept_word[b] = w[2][draw];
+    }
+    // Prefetches back to back, not between the Philox rounds, where each waited for its address
+    // translation (docs/performance.md, event scheme).
+    for (std::uint64_t b = 0; b < m; ++b) {
+      const PairCoefficients& p = pairs[one_pair ? 0 : qs[b]];
       state.species[p.i].prefetch(ks[b]);
       state.species[p.j].prefetch(ls[b]);
     }
+    unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(sx),
+                 std::span(sy), std::span(sz));  // the same bits as unit_vector, in SIMD
     for (std::uint64_t b = 0; b < m; ++b) {
       const std::size_t q = one_pair ? 0 : qs[b];
       const PairCoefficients& p = pairs[q];
       SpeciesStore& sa = state.species[p.i];
       SpeciesStore& sb = state.species[p.j];
-      const RandomBlock& draw = draws[b];
-      const Vec3 sigma = unit_vector(uniform_open(draw[0]), uniform_open(draw[1]));
+      const Vec3 sigma{sx[b], sy[b], sz[b]};
       Vec3 vk = sa.velocity(ks[b]);
       Vec3 vl = sb.velocity(ls[b]);
       Vec3 g = vk - vl;
@@ -119,7 +136,7 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
       if (omega > majorant[q]) {
         majorant[q] = omega;
         ++tally[q].majorant_updates;
-      } else if (uniform_open(draw[2]) * majorant[q] > omega) {
+      } else if (uniform_open(accept_word[b]) * majorant[q] > omega) {
         continue;
       }
       inelastic_collision(vk, vl, sigma, g_sigma, p);
