@@ -46,7 +46,7 @@ constexpr std::uint64_t kCandidatesPerIteration = 1'000'000;
 constexpr double kRestitution = 0.8;
 constexpr std::uint64_t kSeed = 20240601;
 constexpr double kRescaleFactor = 1.25;  // as Dsmc::rescale_factor
-constexpr std::int64_t kSizes[] = {100'000, 10'000'000};
+constexpr std::int64_t kSizes[] = {100'000, 1'000'000, 10'000'000};
 
 Scene bench_scene(std::int64_t particles) {
   Scene scene;

@@ -8,7 +8,7 @@ Runs perf's Google Benchmark programs with --benchmark_out=DIR/<program>.<part>.
 of the repetitions of each counter, and forms a few named ratios whose two sides ran close together in time,
 so that they share the state of the (shared, noisy) machine:
 
-  granmc_over_naive/1e5, /1e7          granmc_collide / naive_collide candidates/s at N = 10^5, 10^7
+  granmc_over_naive/1e5, /1e6, /1e7    granmc_collide / naive_collide candidates/s at N = 10^5, 10^6, 10^7
                                        (bench_collisions, one size at a time, repetitions interleaved at
                                        random between the two)                                (higher is better)
   granmc_over_packed_limit/1e5, /1e7   granmc_collide candidates/s over layout_packed_prefetch pairs/s at the
@@ -27,7 +27,8 @@ so that they share the state of the (shared, noisy) machine:
                                                                                                (lower is better)
 
 Order of one round: bench_collisions at 10^5, bench_layout (packed + prefetch only) at 10^5, bench_event
-(event_maxwell and event_hard_sphere, not the event_sync_* parts) at 10^5, the same three at 10^7, then
+(event_maxwell and event_hard_sphere, not the event_sync_* parts) at 10^5, bench_collisions at 10^6, the
+same three at 10^7, then
 bench_effects (all scenes). Repetitions: each program's default (3, 3, 3 and 5) unless --repetitions.
 --rounds K runs K rounds (DIR/round1 ... DIR/roundK) and takes each ratio's median over the rounds.
 
@@ -68,6 +69,7 @@ ROUND = (
     ("bench_collisions", "1e5", "^(granmc|naive)_collide/100000$", (INTERLEAVE,)),
     ("bench_layout", "1e5", "^layout_packed_prefetch/100000$", ()),
     ("bench_event", "1e5", "^event_(maxwell|hard_sphere)/100000$", ()),
+    ("bench_collisions", "1e6", "^(granmc|naive)_collide/1000000$", (INTERLEAVE,)),
     ("bench_collisions", "1e7", "^(granmc|naive)_collide/10000000$", (INTERLEAVE,)),
     ("bench_layout", "1e7", "^layout_packed_prefetch/10000000$", ()),
     ("bench_event", "1e7", "^event_(maxwell|hard_sphere)/10000000$", ()),  # not interleaved: one 10^7 gas at a time
@@ -87,6 +89,7 @@ DEFAULT_RATIO_THRESHOLDS = {
 }
 
 SIZES = {"1e5": "100000", "1e7": "10000000"}
+NAIVE_SIZES = {"1e5": "100000", "1e6": "1000000", "1e7": "10000000"}  # bench_collisions only
 EVENT_KERNELS = ("maxwell", "hard_sphere")  # bench_event's event_<kernel>/N
 EFFECT_COUNTER = "time/cand"
 EFFECT_PLAIN = "plain"
@@ -170,7 +173,7 @@ def compute_ratios(runs):
         if value is not None:
             out[name] = {"value": value, "better": better, "what": what}
 
-    for tag, n in SIZES.items():
+    for tag, n in NAIVE_SIZES.items():
         put(f"granmc_over_naive/{tag}",
             _ratio(runs, ("bench_collisions", f"granmc_collide/{n}", "candidates/s"),
                    ("bench_collisions", f"naive_collide/{n}", "candidates/s")),
