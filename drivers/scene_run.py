@@ -22,7 +22,8 @@ def run_point(granmc, scene, path_stem, threads):
                     return json.load(g)
     with open(scene_path, "w") as f:
         f.write(text)
-    cmd = [granmc, "run", scene_path, "--out", path_stem + ".h5", "--summary", summary_path, "--quiet"]
+    # Not --quiet: granmc's progress line (after 2 s, with the time left) is how a long tail run shows it moves.
+    cmd = [granmc, "run", scene_path, "--out", path_stem + ".h5", "--summary", summary_path]
     if threads:
         cmd += ["--threads", str(threads)]
     print("  run", os.path.basename(scene_path), flush=True)
