@@ -67,6 +67,7 @@ class EventWhiteNoise {
     // pi_hat = 2 pi rate (n - 1) (u U_max)^lambda  (001 eq. 25; U_max here in stored units)
     rate_prefactor_ = 2.0 * std::numbers::pi * scene.collision.rate * static_cast<double>(particles_ - 1) *
                       std::pow(u, kernel_.lambda());
+    candidate_rate_ = rate_prefactor_;  // Maxwell: U_max^0 = 1, and no majorant is kept
     reset_majorant();
     prepare(batches_[0], 0);
     prepare(batches_[1], batch_size);
@@ -82,7 +83,7 @@ class EventWhiteNoise {
     SpeciesStore& store = state_.species[0];
     for (;;) {
       const DrawBatch& batch = batches_[current_];
-      const double next = state_.time + batch.wait[slot_] / candidate_rate();  // 001 step 2.1
+      const double next = state_.time + batch.wait[slot_] / candidate_rate_;  // 001 step 2.1
       if (!(next < t)) break;  // memoryless: the draw is discarded and the process restarts at t
       state_.time = next;
       candidate(store, batch, slot_);
@@ -97,9 +98,11 @@ class EventWhiteNoise {
   }
 
  private:
-  double candidate_rate() const noexcept {
-    if constexpr (Kernel::constant_rate) return rate_prefactor_;
-    else return rate_prefactor_ * std::pow(majorant_, kernel_.lambda());
+  /// U_max := value, and with it pi_hat = rate_prefactor U_max^lambda (001 eq. 25): computed where U_max
+  /// changes, not at every draw (a pow per candidate was a tenth of a VHS candidate's time).
+  void set_majorant(double value) noexcept {
+    majorant_ = value;
+    candidate_rate_ = rate_prefactor_ * std::pow(majorant_, kernel_.lambda());
   }
 
   /// The state-independent part of `batch_size` consecutive draws. Draw d depends only on the counter d:
@@ -240,7 +243,7 @@ class EventWhiteNoise {
   void raise_majorant(const Vec3& vi, const Vec3& vj) noexcept {
     const double bound = 2.0 * std::sqrt(std::max(norm2(vi - reference_), norm2(vj - reference_)));
     if (bound > majorant_) {
-      majorant_ = bound;
+      set_majorant(bound);
       ++tally_.majorant_updates;
     }
   }
@@ -254,7 +257,7 @@ class EventWhiteNoise {
     reference_ = (1.0 / static_cast<double>(particles_)) * sum;
     double max2 = 0.0;
     store.for_each_velocity([&](const Vec3& c) { max2 = std::max(max2, norm2(c - reference_)); });
-    majorant_ = 2.0 * std::sqrt(max2);
+    set_majorant(2.0 * std::sqrt(max2));
   }
 
   Kernel kernel_;
@@ -265,6 +268,7 @@ class EventWhiteNoise {
   double noise_ = 0.0;           // 2 beta / u^2
   double rate_prefactor_ = 0.0;  // pi_hat / U_max^lambda
   double majorant_ = 0.0;        // U_max, stored units
+  double candidate_rate_ = 0.0;  // pi_hat, per unit time
   Vec3 reference_;               // V of the majorant, stored units
   std::uint64_t draws_ = 0;      // waiting-time draws so far (the random counter)
   std::uint64_t syncs_ = 0;      // sample-time updates so far
