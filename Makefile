@@ -141,9 +141,10 @@ bench-effects: build
 	cmake --build $(BUILD) --target bench-effects
 
 # Regression benchmarks (issue 10 item 4, perf/bench_compare.py, docs/performance.md): the ratios granmc / naive,
-# granmc / packed gather-scatter limit and effect / plain, compared with perf/baselines/baseline.json; fails
-# if one moved the wrong way by more than its threshold (10 %, or the floor for that ratio in the baseline).
-# BENCH_ROUNDS rounds of about 2 min each.
+# granmc / packed gather-scatter limit (DSMC stage and event scheme) and effect / plain, compared with
+# perf/baselines/baseline.json; fails if one moved the wrong way by more than its threshold (10 %, or the
+# floor for that ratio in the baseline).
+# BENCH_ROUNDS rounds of about 3 min each.
 # bench-baseline records a new baseline instead. JSON in $(BUILD)/bench-json.
 BENCH_ROUNDS ?= 3
 .PHONY: bench-compare bench-baseline
