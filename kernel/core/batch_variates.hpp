@@ -8,8 +8,10 @@
 // core/turn_sincos.hpp with identical operations, so directions agree bit for bit. The logarithm is
 // xsimd's, within 1 ulp of libm's; xsimd's pow is within about 20 ulp (tests/test_numerics.cpp measures
 // all three), a relative error of 5e-15 in an acceptance probability.
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <type_traits>
 
@@ -20,6 +22,7 @@
 #include <xsimd/xsimd.hpp>
 #pragma GCC diagnostic pop
 
+#include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/turn_sincos.hpp"
 #include "kernel/core/vec3.hpp"
@@ -128,5 +131,36 @@ inline void unit_vectors(std::span<const double, N> u1, std::span<const double, 
     z[k] = e.z;
   }
 }
+
+/// Standard normal vectors for N consecutive particles: particle first + k gets the block (purpose, sub,
+/// step, first + k), as two Box-Muller pairs (words 0-1 and 2-3) of which the last value is unused.
+template <std::size_t N>
+class ParticleNormals {
+ public:
+  ParticleNormals(const RandomStream& rng, RngPurpose purpose, std::uint16_t sub, std::uint64_t step,
+                  std::uint64_t first) noexcept {
+    std::array<std::uint64_t, N> steps, index;
+    for (std::size_t k = 0; k < N; ++k) {
+      steps[k] = step;
+      index[k] = first + k;
+    }
+    const RandomBlocks<N> blocks = rng.blocks(purpose, sub, steps, index);
+    const auto& w = blocks.word;
+    std::array<double, 2 * N> u1, u2;
+    for (std::size_t k = 0; k < N; ++k) {
+      u1[2 * k] = uniform_open(w[0][k]);
+      u2[2 * k] = uniform_open(w[1][k]);
+      u1[2 * k + 1] = uniform_open(w[2][k]);
+      u2[2 * k + 1] = uniform_open(w[3][k]);
+    }
+    standard_normal_pairs(std::span<const double, 2 * N>(u1), std::span<const double, 2 * N>(u2), std::span(z1_),
+                          std::span(z2_));
+  }
+  /// The normal vector of particle first + k.
+  [[nodiscard]] Vec3 operator[](std::size_t k) const noexcept { return {z1_[2 * k], z2_[2 * k], z1_[2 * k + 1]}; }
+
+ private:
+  std::array<double, 2 * N> z1_, z2_;
+};
 
 }  // namespace granmc

@@ -3,12 +3,15 @@
 // in the time-stepped scheme: after each collision stage every velocity gets the Brownian increment of
 // the step, V += sqrt(2 beta dt) xi (001 eq. 23), a first-order splitting of noise and collisions (001
 // sec. 4 describes it; the event scheme, schemes/event_white_noise.hpp, has no splitting error).
-// Random words: purpose white_noise_kick, sub = species, step = time step, index = particle.
+// Random words: purpose white_noise_kick, sub = species, step = time step, index = particle; the normals
+// of 16 particles at a time in SIMD (core/batch_variates.hpp).
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
+#include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
-#include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/effects/step_context.hpp"
 #include "kernel/observe/compensated_sum.hpp"
@@ -21,6 +24,8 @@ struct WhiteNoise {
   double beta = 0.0;            // velocity diffusion coefficient (velocity^2 / time)
   const Scene* scene = nullptr; // species masses
 
+  static constexpr std::size_t batch = 16;  // particles whose normals are computed together
+
   /// Returns the change of sum_i m_i sum_k |c_k|^2 (stored units).
   double apply(GasState& state, const StepContext& step) const noexcept {
     const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
@@ -28,15 +33,16 @@ struct WhiteNoise {
     for (std::size_t i = 0; i < state.species.size(); ++i) {
       SpeciesStore& store = state.species[i];
       const double mass = scene->species[i].mass;
-      for (std::size_t k = 0; k < store.size(); ++k) {
-        const RandomBlock r = step.rng->block(RngPurpose::white_noise_kick, static_cast<std::uint16_t>(i), state.step, k);
-        double x, y, z, unused;
-        standard_normal_pair(uniform_open(r[0]), uniform_open(r[1]), x, y);
-        standard_normal_pair(uniform_open(r[2]), uniform_open(r[3]), z, unused);
-        const Vec3 c = store.velocity(k);
-        const Vec3 kicked = c + width * Vec3{x, y, z};
-        store.set_velocity(k, kicked);
-        change.add(mass * (norm2(kicked) - norm2(c)));
+      for (std::size_t first = 0; first < store.size(); first += batch) {
+        const ParticleNormals<batch> xi(*step.rng, RngPurpose::white_noise_kick, static_cast<std::uint16_t>(i),
+                                        state.step, first);
+        const std::size_t count = std::min(batch, store.size() - first);
+        for (std::size_t k = 0; k < count; ++k) {
+          const Vec3 c = store.velocity(first + k);
+          const Vec3 kicked = c + width * xi[k];
+          store.set_velocity(first + k, kicked);
+          change.add(mass * (norm2(kicked) - norm2(c)));
+        }
       }
     }
     return change.value();

@@ -191,26 +191,10 @@ class EventWhiteNoise {
   /// (brownian_sync, syncs_, k): two Box-Muller pairs, one value unused; computed batch_size particles at
   /// a time (the last batch computes normals past the end and drops them).
   void bring_all_to(SpeciesStore& store, double t) const noexcept {
-    std::array<double, 2 * batch_size> u1, u2, z1, z2;
     for (std::size_t first = 0; first < particles_; first += batch_size) {
-      std::array<std::uint64_t, batch_size> step, index;
-      for (std::size_t k = 0; k < batch_size; ++k) {
-        step[k] = syncs_;
-        index[k] = first + k;
-      }
-      const RandomBlocks<batch_size> blocks = rng_.blocks(RngPurpose::brownian_sync, 0, step, index);
-      const auto& z = blocks.word;
-      for (std::size_t k = 0; k < batch_size; ++k) {
-        u1[2 * k] = uniform_open(z[0][k]);
-        u2[2 * k] = uniform_open(z[1][k]);
-        u1[2 * k + 1] = uniform_open(z[2][k]);
-        u2[2 * k + 1] = uniform_open(z[3][k]);
-      }
-      standard_normal_pairs(std::span<const double, 2 * batch_size>(u1), std::span<const double, 2 * batch_size>(u2),
-                            std::span(z1), std::span(z2));
+      const ParticleNormals<batch_size> xi(rng_, RngPurpose::brownian_sync, 0, syncs_, first);
       const std::size_t count = std::min(batch_size, particles_ - first);
-      for (std::size_t k = 0; k < count; ++k)
-        brownian_update(store, first + k, t, {z1[2 * k], z2[2 * k], z1[2 * k + 1]});
+      for (std::size_t k = 0; k < count; ++k) brownian_update(store, first + k, t, xi[k]);
     }
   }
 
