@@ -2,7 +2,7 @@
 """High-velocity tail exponent b of f ~ exp(-a |v|^b) from speed-shell histograms (001 sec. 5.3, eqs. 37-38).
 
 Usage: /usr/bin/python3 drivers/tail_fit.py RUN.h5 OUT_DIR [--k0 1] [--window X0 X1] [--min-count 20]
-                                             [--theory B] [--label TEXT]
+                                             [--quantity density|counts] [--theory B] [--label TEXT]
 
 RUN.h5 is an event-scheme run (method "event"): its /species/<name>/speed_distribution/counts hold, per
 replica, the particles counted in each shell r_{k-1} <= |v| < r_k, r_k = k R / K (001 eq. 37), summed over
@@ -25,8 +25,16 @@ variable, ln(k - k0). Default: the same width 0.35 ending at the last shell wher
 counts at least --min-count particles, so that each y_k of each replica has a relative error of at most
 about 1/sqrt(min-count); the paper's window is where its 10^9 samples gave such counts.
 
-b is fitted per replica (least squares of y on x over the window) and reported as the replica mean with
-its confidence half-width (lambda_p = 3.2, 001 eq. 31); the fit of the pooled histogram is reported too.
+Two estimates of b on the same window, each fitted per replica and reported as the replica mean with its
+confidence half-width (lambda_p = 3.2, 001 eq. 31), and on the pooled histogram:
+- eq38: the paper's, least squares of y_k on x_k. It is biased even for an exact tail: if f = C exp(-a r^b)
+  holds only in the tail, ln f_k0 - ln f_k = a r^b + D with D = ln f_k0 - ln C, so y_k = ln(a r^b + D),
+  whose slope in ln r is b a r^b / (a r^b + D), not b, until a r^b >> |D|. An overpopulated tail lies above
+  the core (C > f_k0 for the density), D < 0, and eq38 reads b too high (Example 7 at the paper's size:
+  1.33 where theory says 1).
+- free offset (the headline b): ln f_k = c - a r_k^b fitted on the window with c, a and b free (weighted
+  least squares, weights the shell counts; b by a grid then a fine search), so the core's offset D does not
+  enter. On a narrow window b is correlated with a and its CI is wider.
 Writes OUT_DIR/tail.json, OUT_DIR/table.md, OUT_DIR/figure.png (y_k against x_k as in 001 Figs. 5-7, with
 the lines y = x - c, 1.25 x - c, 1.5 x - c for comparison, and the histogram).
 """
@@ -66,6 +74,39 @@ def xy(counts, edges, k0, quantity):
     x = np.log(k[sel] - k0)
     y = np.log(np.log(fk0) - np.log(f[sel]))
     return k[sel], x, y
+
+
+def free_offset_exponent(counts, edges, k0, window):
+    """b of ln f_k = c - a r_k^b on the shells k with ln(k - k0) in the window, f_k the density per unit
+    velocity volume at the shell centre r_k, c, a, b free; weighted least squares with weights the counts
+    (the inverse variance of ln f_k). NaN if fewer than 4 shells have counts."""
+    shells = len(counts)
+    k = np.arange(1, shells + 1)
+    ln_k = np.log(np.maximum(k - k0, 1e-300))
+    sel = (k > k0) & (ln_k >= window[0]) & (ln_k <= window[1]) & (counts > 0)
+    if sel.sum() < 4:
+        return float("nan")
+    volume = 4.0 * math.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3)
+    r = 0.5 * (edges[1:] + edges[:-1])[sel]
+    y = np.log(counts[sel] / volume[sel])
+    w = np.sqrt(counts[sel].astype(float))
+
+    def misfit(b):
+        design = np.vstack([np.ones_like(r), -(r ** b)]).T
+        coef = np.linalg.lstsq(design * w[:, None], y * w, rcond=None)[0]
+        return float(np.sum((w * (y - design @ coef)) ** 2))
+
+    grid = np.linspace(0.3, 3.0, 271)
+    best = grid[int(np.argmin([misfit(b) for b in grid]))]
+    fine = np.linspace(best - 0.01, best + 0.01, 201)
+    return float(fine[int(np.argmin([misfit(b) for b in fine]))])
+
+
+def mean_ci(values):
+    ok = np.isfinite(values)
+    mean = float(values[ok].mean()) if ok.any() else float("nan")
+    ci = float(LAMBDA_P * values[ok].std(ddof=1) / math.sqrt(ok.sum())) if ok.sum() > 1 else float("nan")
+    return mean, ci, int(ok.sum())
 
 
 def slope(x, y):
@@ -110,39 +151,48 @@ def main():
         sel = (x >= window[0]) & (x <= window[1])
         per_replica.append(slope(x[sel], y[sel]))
     b = np.array(per_replica)
-    ok = np.isfinite(b)
-    b_mean = float(b[ok].mean()) if ok.any() else float("nan")
-    b_ci = float(LAMBDA_P * b[ok].std(ddof=1) / math.sqrt(ok.sum())) if ok.sum() > 1 else float("nan")
+    b_mean, b_ci, fitted = mean_ci(b)
+    free = np.array([free_offset_exponent(counts[r], edges, k0, window) for r in range(replicas)])
+    free_mean, free_ci, free_fitted = mean_ci(free)
 
     pooled = counts.sum(axis=0)
     k, x, y = xy(pooled, edges, k0, args.quantity)
     sel = (x >= window[0]) & (x <= window[1])
     b_pooled = slope(x[sel], y[sel])
+    free_pooled = free_offset_exponent(pooled, edges, k0, window)
     h = edges[1] - edges[0]
     r_window = [k0 * h + h * math.exp(window[0]), k0 * h + h * math.exp(window[1])]
 
     result = {"run": args.run, "quantity": args.quantity, "k0": k0, "window_ln_k_minus_k0": list(window), "window_speed": r_window,
-              "shells_in_window": int(sel.sum()), "replicas": replicas, "replicas_fitted": int(ok.sum()),
-              "exponent": {"mean": b_mean, "ci": b_ci}, "exponent_pooled": b_pooled, "theory": args.theory,
-              "per_replica": [None if not math.isfinite(v) else v for v in b]}
+              "shells_in_window": int(sel.sum()), "replicas": replicas, "replicas_fitted": fitted,
+              "exponent": {"mean": free_mean, "ci": free_ci, "pooled": free_pooled, "replicas_fitted": free_fitted,
+                           "method": "free offset: ln f = c - a r^b on the window (density)"},
+              "exponent_eq38": {"mean": b_mean, "ci": b_ci, "pooled": b_pooled, "quantity": args.quantity},
+              "theory": args.theory,
+              "per_replica": [None if not math.isfinite(v) else v for v in free],
+              "per_replica_eq38": [None if not math.isfinite(v) else v for v in b]}
     with open(os.path.join(args.out, "tail.json"), "w") as f:
         json.dump(result, f, indent=1)
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write(f"# Tail exponent (001 eq. 38): {args.label or args.run}\n\n")
-        f.write("| quantity | k0 | window ln(k - k0) | speeds | shells | replicas | b granmc | CI | b pooled | b theory |\n")
+        f.write("| fit | k0 | window ln(k - k0) | speeds | shells | replicas | b granmc | CI | b pooled | b theory |\n")
         f.write("|---|---|---|---|---|---|---|---|---|---|\n")
         th = "-" if args.theory is None else f"{args.theory:g}"
-        f.write(f"| {args.quantity} | {k0} | [{window[0]:.3f}, {window[1]:.3f}] | [{r_window[0]:.2f}, {r_window[1]:.2f}] | {int(sel.sum())} | "
-                f"{int(ok.sum())}/{replicas} | {b_mean:.4f} | {b_ci:.4f} | {b_pooled:.4f} | {th} |\n")
-    plot(args, counts, edges, k0, window, b_mean, b_ci, os.path.join(args.out, "figure.png"))
+        where = f"{k0} | [{window[0]:.3f}, {window[1]:.3f}] | [{r_window[0]:.2f}, {r_window[1]:.2f}] | {int(sel.sum())}"
+        f.write(f"| free offset (density) | {where} | {free_fitted}/{replicas} | {free_mean:.4f} | {free_ci:.4f} | "
+                f"{free_pooled:.4f} | {th} |\n")
+        f.write(f"| eq38 ({args.quantity}) | {where} | {fitted}/{replicas} | {b_mean:.4f} | {b_ci:.4f} | "
+                f"{b_pooled:.4f} | {th} |\n")
+    plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, os.path.join(args.out, "figure.png"))
     if not math.isfinite(b_mean):
         print("tail_fit.py: no shell of the window has 0 < f_k < f_k0 in every replica; widen the window or run more "
               "particles")
-    print(f"b = {b_mean:.4f} +- {b_ci:.4f} (pooled {b_pooled:.4f}) on ln(k - k0) in [{window[0]:.3f}, {window[1]:.3f}]"
-          f" (|v| in [{r_window[0]:.2f}, {r_window[1]:.2f}]); wrote {args.out}/figure.png, table.md, tail.json")
+    print(f"b = {free_mean:.4f} +- {free_ci:.4f} (pooled {free_pooled:.4f}; eq38: {b_mean:.4f} +- {b_ci:.4f}, pooled "
+          f"{b_pooled:.4f}) on ln(k - k0) in [{window[0]:.3f}, {window[1]:.3f}] (|v| in [{r_window[0]:.2f}, "
+          f"{r_window[1]:.2f}]); wrote {args.out}/figure.png, table.md, tail.json")
 
 
-def plot(args, counts, edges, k0, window, b_mean, b_ci, path):
+def plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -163,7 +213,8 @@ def plot(args, counts, edges, k0, window, b_mean, b_ci, path):
     xs = np.linspace(x.min(), x.max(), 10) if len(x) else np.array([0, 1])
     for s, style in ((1.0, ":"), (1.25, "--"), (1.5, "-.")):
         ax2.plot(xs, s * xs + (c + window[0] - s * window[0]), "C0" + style, lw=0.8, label=f"slope {s}")
-    ax2.axvspan(*window, color="C1", alpha=0.2, label=f"fit: b = {b_mean:.3f} +- {b_ci:.3f}")
+    ax2.axvspan(*window, color="C1", alpha=0.2,
+                label=f"window: eq38 b = {b_mean:.3f} +- {b_ci:.3f}, free offset b = {free_mean:.3f} +- {free_ci:.3f}")
     ax2.set_xlabel("x_k = ln(k - k0)  (= ln(r_k - r_k0) - ln(R/K))")
     ax2.set_ylabel("y_k = ln(ln f_k0 - ln f_k)")
     ax2.legend(fontsize="small")
