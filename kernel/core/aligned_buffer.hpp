@@ -14,6 +14,42 @@
 
 namespace granmc {
 
+namespace detail {
+
+/// One freed huge-page block per thread, kept for the thread's next allocation of the same size. A run
+/// allocates each replica's particle store anew on the thread that runs it; a fresh block makes the kernel
+/// zero every page on first touch, a third of the set-up of a 10^7-particle replica (docs/performance.md).
+class SpareHugeBlock {
+ public:
+  SpareHugeBlock() = default;
+  SpareHugeBlock(const SpareHugeBlock&) = delete;
+  SpareHugeBlock& operator=(const SpareHugeBlock&) = delete;
+  ~SpareHugeBlock() { std::free(data_); }
+
+  /// The kept block if it has `bytes` bytes (then no longer kept), else nullptr.
+  void* take(std::size_t bytes) noexcept {
+    if (data_ == nullptr || bytes_ != bytes) return nullptr;
+    return std::exchange(data_, nullptr);
+  }
+  /// Keeps the block if none is kept, else frees it.
+  void give(void* data, std::size_t bytes) noexcept {
+    if (data_ != nullptr) {
+      std::free(data);
+      return;
+    }
+    data_ = data;
+    bytes_ = bytes;
+  }
+
+ private:
+  void* data_ = nullptr;
+  std::size_t bytes_ = 0;
+};
+
+inline thread_local SpareHugeBlock spare_huge_block;
+
+}  // namespace detail
+
 template <class T>
 class AlignedBuffer {
   static_assert(std::is_trivially_copyable_v<T>, "AlignedBuffer holds plain values");
@@ -28,9 +64,12 @@ class AlignedBuffer {
     const std::size_t bytes = n * sizeof(T);
     const std::size_t align = bytes >= huge_page ? huge_page : cache_line;
     const std::size_t rounded = (bytes + align - 1) / align * align;
-    data_ = static_cast<T*>(std::aligned_alloc(align, rounded));
-    if (data_ == nullptr) throw std::bad_alloc();
-    if (align == huge_page) madvise(data_, rounded, MADV_HUGEPAGE);  // advice only; failure is harmless
+    if (align == huge_page) data_ = static_cast<T*>(detail::spare_huge_block.take(rounded));
+    if (data_ == nullptr) {
+      data_ = static_cast<T*>(std::aligned_alloc(align, rounded));
+      if (data_ == nullptr) throw std::bad_alloc();
+      if (align == huge_page) madvise(data_, rounded, MADV_HUGEPAGE);  // advice only; failure is harmless
+    }
     std::memset(static_cast<void*>(data_), 0, rounded);
   }
   AlignedBuffer(const AlignedBuffer& o) : AlignedBuffer(o.size_) {
@@ -43,7 +82,14 @@ class AlignedBuffer {
     std::swap(size_, o.size_);
     return *this;
   }
-  ~AlignedBuffer() { std::free(data_); }
+  ~AlignedBuffer() {
+    if (data_ == nullptr) return;
+    const std::size_t bytes = size_ * sizeof(T);
+    if (bytes >= huge_page)
+      detail::spare_huge_block.give(data_, (bytes + huge_page - 1) / huge_page * huge_page);
+    else
+      std::free(data_);
+  }
 
   [[nodiscard]] std::size_t size() const noexcept { return size_; }
   T& operator[](std::size_t i) noexcept { return data_[i]; }
