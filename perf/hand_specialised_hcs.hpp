@@ -64,7 +64,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   HandTally t;
   std::uint64_t ks[batch], ls[batch];
   std::uint32_t accept_word[batch];
-  std::array<double, batch> dir1, dir2, sx, sy, sz;
+  std::array<double, batch> dir1{}, dir2{}, sx, sy, sz;  // initialised: a last, partial batch converts all lanes
   std::array<std::uint64_t, 2 * batch> steps, index;
   steps.fill(step);
   for (std::uint64_t s0 = 0; s0 < candidates; s0 += batch) {

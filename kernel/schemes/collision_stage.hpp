@@ -75,7 +75,7 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
   std::uint64_t ks[batch], ls[batch];
   std::uint8_t qs[batch];
   std::uint32_t accept_word[batch];
-  std::array<double, batch> dir1, dir2, sx, sy, sz;
+  std::array<double, batch> dir1{}, dir2{}, sx, sy, sz;  // initialised: a last, partial batch converts all lanes
   std::array<std::uint64_t, 2 * batch> steps, index;
   steps.fill(state.step);
   for (std::uint64_t s0 = 0; s0 < total; s0 += batch) {
