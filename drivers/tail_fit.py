@@ -60,6 +60,11 @@ def load_counts(path):
     return counts, edges, method
 
 
+def shell_volumes(edges):
+    """The velocity-space volume of each shell r_{k-1} <= |v| < r_k."""
+    return 4.0 * math.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3)
+
+
 def xy(counts, edges, k0, quantity):
     """x_k = ln(k - k0) (the paper's window variable) and y_k = ln(ln f_k0 - ln f_k) for shells k > k0 with
     counts > 0 (1-based shell index k as in 001 eq. 37), f_k the shell fraction ("counts") or the density
@@ -68,7 +73,7 @@ def xy(counts, edges, k0, quantity):
     k = np.arange(1, shells + 1)
     f = counts / counts.sum()
     if quantity == "density":
-        f = f / (4.0 * math.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3))
+        f = f / shell_volumes(edges)
     fk0 = f[k0 - 1]
     sel = (k > k0) & (f > 0) & (f < fk0)
     x = np.log(k[sel] - k0)
@@ -86,7 +91,7 @@ def free_offset_exponent(counts, edges, k0, window):
     sel = (k > k0) & (ln_k >= window[0]) & (ln_k <= window[1]) & (counts > 0)
     if sel.sum() < 4:
         return float("nan")
-    volume = 4.0 * math.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3)
+    volume = shell_volumes(edges)
     r = 0.5 * (edges[1:] + edges[:-1])[sel]
     y = np.log(counts[sel] / volume[sel])
     w = np.sqrt(counts[sel].astype(float))
@@ -203,7 +208,7 @@ def plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, path
     centres = 0.5 * (edges[1:] + edges[:-1])
     f = pooled / pooled.sum()
     if args.quantity == "density":
-        f = f / (4.0 * math.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3))
+        f = f / shell_volumes(edges)
     ax1.semilogy(centres[f > 0], f[f > 0], "k-", lw=1)
     ax1.set_xlabel("|v|")
     ax1.set_ylabel("f(|v|) per unit velocity volume" if args.quantity == "density" else "f_k (shell fraction, 001 eq. 37)")

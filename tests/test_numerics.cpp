@@ -169,8 +169,8 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
       worst_power = std::max(worst_power, ulps(p[k], std::pow(u1[k], 2.5)));
       double s1, s2;
       standard_normal_pair(u1[k], u2[k], s1, s2);
-      worst_normal = std::max({worst_normal, std::abs(z1[k] - s1) / (std::abs(std::sqrt(-2.0 * std::log(u1[k]))) * 0x1p-52),
-                               std::abs(z2[k] - s2) / (std::abs(std::sqrt(-2.0 * std::log(u1[k]))) * 0x1p-52)});
+      const double radius_ulp = std::sqrt(-2.0 * std::log(u1[k])) * 0x1p-52;
+      worst_normal = std::max({worst_normal, std::abs(z1[k] - s1) / radius_ulp, std::abs(z2[k] - s2) / radius_ulp});
       const Vec3 v = unit_vector(u1[k], u2[k]);
       ASSERT_EQ(x[k], v.x);
       ASSERT_EQ(y[k], v.y);
