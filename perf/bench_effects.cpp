@@ -45,8 +45,10 @@
 // --benchmark_* flag overrides them. About 90 s on the project machine (2 vCPUs); nine gases of 32 MB each.
 // Without the plain benchmark (e.g. --benchmark_filter=hand) the ratios print as nan.
 #include <benchmark/benchmark.h>
+#include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -90,6 +92,7 @@ constexpr double kRestitution = 0.8;
 constexpr std::uint64_t kSeed = 20240601;
 constexpr double kPackingFraction = 0.2;
 constexpr double kMaxwellRate = 0.25;  // collision.rate of the maxwell_kernel scene (n sigma^2 = 4 rate)
+int paired_rounds = 301;  // rounds of the paired ratios (--paired_rounds=N, this program's own flag; 0: none)
 
 // ---- scenes --------------------------------------------------------------------------------------
 
@@ -430,6 +433,56 @@ void check_hand_matches_library() {
       "tallies (N = 50 and 10^5, 3 steps each)\n");
 }
 
+// ---- paired ratios: one step of each scene in turn ----------------------------------------------
+
+/// This thread's CPU time in seconds.
+double thread_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+/// CPU seconds per candidate of one whole step of g.
+double seconds_per_candidate(Gas& g) {
+  const std::uint64_t c0 = g.counts().candidates;
+  const double t0 = thread_seconds();
+  g.step();
+  const double t1 = thread_seconds();
+  return (t1 - t0) / static_cast<double>(g.counts().candidates - c0);
+}
+
+struct PairedRatio {
+  double median = std::nan(""), low = std::nan(""), high = std::nan("");
+};
+
+/// The ratio of a's time per candidate to b's, `rounds` times, each from one step of a and one of b taken
+/// back to back (alternating which goes first), so that both see the same state of the shared host; the
+/// median of the rounds with its distribution-free 95 % confidence interval (the order statistics at
+/// n/2 -+ 0.98 sqrt(n), from the binomial(n, 1/2) law of the number of rounds below the true median).
+/// The Google Benchmark medians above compare repetitions seconds apart, and this host's load drifts by
+/// +-10 % over seconds; here the drift cancels within each round.
+PairedRatio paired_ratio(Gas& a, Gas& b, int rounds) {
+  std::vector<double> r;
+  for (int i = 0; i < rounds; ++i) {
+    double ta, tb;
+    if (i % 2 == 0) {
+      ta = seconds_per_candidate(a);
+      tb = seconds_per_candidate(b);
+    } else {
+      tb = seconds_per_candidate(b);
+      ta = seconds_per_candidate(a);
+    }
+    r.push_back(ta / tb);
+  }
+  std::sort(r.begin(), r.end());
+  const double n = static_cast<double>(r.size()), half_width = 0.98 * std::sqrt(n);
+  const auto at = [&](double rank1) {  // 1-based rank, clamped to the sample
+    return r[static_cast<std::size_t>(std::clamp(rank1, 1.0, n)) - 1];
+  };
+  return {0.5 * (at(std::floor((n + 1) / 2)) + at(std::ceil((n + 1) / 2))), at(std::floor(n / 2 - half_width)),
+          at(std::ceil(n / 2 + 1 + half_width))};
+}
+
 // ---- table ---------------------------------------------------------------------------------------
 
 void print_table(const perf::RecordingReporter& rep) {
@@ -456,6 +509,21 @@ void print_table(const perf::RecordingReporter& rep) {
   const double hand = v("hand_specialised", "time/cand");
   if (!std::isnan(hand) && !std::isnan(plain))
     std::printf("\nplain / hand_specialised = %.3f (issue 8 target: within 3%%, i.e. <= 1.03)\n", plain / hand);
+  if (!std::isnan(plain) && paired_rounds > 0) {
+    std::printf(
+        "\nPaired: each scene against plain, %d rounds of one step of each back to back (CPU time of this "
+        "thread); median ratio and its 95 %% confidence interval\n| scene | ratio to plain | 95 %% CI |\n|---|---|---|\n",
+        paired_rounds);
+    const SceneBench& plain_bench = scene_benches().front();
+    for (const SceneBench& b : scene_benches()) {
+      if (&b == &plain_bench || std::isnan(v(b.name, "time/cand"))) continue;
+      const PairedRatio r = paired_ratio(gas(b), gas(plain_bench), paired_rounds);
+      std::printf("| %s | %.3f | [%.3f, %.3f] |\n", b.name, r.median, r.low, r.high);
+      if (std::string(b.name) == "hand_specialised")
+        std::printf("|   (plain / hand_specialised) | %.3f | [%.3f, %.3f] (issue 8 target: <= 1.03) |\n",
+                    1.0 / r.median, 1.0 / r.high, 1.0 / r.low);
+    }
+  }
   const double apply = v("white_noise_apply", "time/particle"), draws = v("white_noise_draws", "time/particle");
   const double wn = v("white_noise", "time/cand");
   if (!std::isnan(wn) && !std::isnan(plain) && !std::isnan(apply) && !std::isnan(draws))
@@ -473,7 +541,13 @@ int main(int argc, char** argv) {
   std::string reps = "--benchmark_repetitions=5", interleave = "--benchmark_enable_random_interleaving=true";
   args.push_back(reps.data());
   args.push_back(interleave.data());
-  for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i], flag = "--paired_rounds=";
+    if (a.starts_with(flag))
+      paired_rounds = std::atoi(a.c_str() + flag.size());
+    else
+      args.push_back(argv[i]);
+  }
   if (!perf::initialize(static_cast<int>(args.size()), args.data(), "1.0")) return 1;
 
   check_hand_matches_library();

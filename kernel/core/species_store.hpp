@@ -18,7 +18,28 @@
 namespace granmc {
 
 class SpeciesStore {
+  struct Record;
+
  public:
+  /// One particle of the store, found once and then read and written without the store: a batch of
+  /// candidates from several species (a mixture's pairs) looks each particle up when it is drawn, so the
+  /// loads of its velocity do not wait on which store and which pair it belongs to.
+  class Particle {
+   public:
+    [[nodiscard]] Vec3 velocity() const noexcept { return {r_->v[0], r_->v[1], r_->v[2]}; }
+    void set_velocity(const Vec3& v) const noexcept {
+      r_->v[0] = v.x;
+      r_->v[1] = v.y;
+      r_->v[2] = v.z;
+    }
+    /// Hint that the particle will be read and written soon (random pairs are memory-latency bound).
+    void prefetch() const noexcept { __builtin_prefetch(r_, 1, 3); }
+
+   private:
+    friend class SpeciesStore;
+    Record* r_ = nullptr;
+  };
+
   SpeciesStore() = default;
   explicit SpeciesStore(std::size_t particles) : records_(particles) {}
 
@@ -37,6 +58,12 @@ class SpeciesStore {
   /// The time of particle k's last lazy update (event scheme, 001 sec. 4: particles are (v_j, t_j)).
   [[nodiscard]] double last_update(std::size_t k) const noexcept { return records_[k].aux; }
   void set_last_update(std::size_t k, double t) noexcept { records_[k].aux = t; }
+
+  [[nodiscard]] Particle particle(std::size_t k) noexcept {
+    Particle p;
+    p.r_ = &records_[k];
+    return p;
+  }
 
   /// Hint that particle k will be read soon (random pair selection is memory-latency bound).
   void prefetch(std::size_t k) const noexcept { __builtin_prefetch(&records_[k], 1, 3); }

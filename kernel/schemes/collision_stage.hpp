@@ -72,7 +72,22 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
   }
   for (std::size_t k = n_pairs == 0 ? 0 : n_pairs - 1; k + 1 < max_pairs; ++k)
     cumulative[k] = std::numeric_limits<std::int64_t>::max();
-  std::uint64_t ks[batch], ls[batch];
+  // Per pair, once per step: the two stores and the ranges the indices are drawn from (N_j - 1 within a
+  // species). Each candidate then finds its two particles as it is drawn, and the collision loop reads
+  // them without going through the pair and the store again (for a mixture that chain of loads stood in
+  // front of every velocity load: docs/performance.md, effects).
+  SpeciesStore* store_k[max_pairs];
+  SpeciesStore* store_l[max_pairs];
+  std::uint64_t range_k[max_pairs], range_l[max_pairs];
+  bool same_species[max_pairs];
+  for (std::size_t q = 0; q < n_pairs; ++q) {
+    store_k[q] = &state.species[pairs[q].i];
+    store_l[q] = &state.species[pairs[q].j];
+    same_species[q] = pairs[q].i == pairs[q].j;
+    range_k[q] = store_k[q]->size();
+    range_l[q] = same_species[q] ? range_k[q] - 1 : store_l[q]->size();
+  }
+  SpeciesStore::Particle pk[batch], pl[batch];
   std::uint8_t qs[batch];
   std::uint32_t accept_word[batch];
   std::array<double, batch> dir1{}, dir2{}, sx, sy, sz;  // initialised: a last, partial batch converts all lanes
@@ -98,15 +113,13 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
         for (std::size_t k = 0; k + 1 < max_pairs; ++k) cumulative[k] -= static_cast<std::int64_t>(k >= q);
         qs[b] = static_cast<std::uint8_t>(q);
       }
-      const PairCoefficients& p = pairs[q];
-      const bool same_species = p.i == p.j;
-      const std::uint64_t na = state.species[p.i].size();
-      const std::uint64_t nb = same_species ? na - 1 : state.species[p.j].size();
-      ks[b] = uniform_index(w[0][pick], w[1][pick], na);
-      ls[b] = uniform_index(w[2][pick], w[3][pick], nb);
+      const std::uint64_t k = uniform_index(w[0][pick], w[1][pick], range_k[q]);
+      std::uint64_t l = uniform_index(w[2][pick], w[3][pick], range_l[q]);
       // Uniform over the other N_i - 1 particles; branch-free: a branch here is taken half the time at
       // random, and its mispredictions discard the overlapped work of the next candidates.
-      ls[b] += static_cast<std::uint64_t>(same_species & (ls[b] >= ks[b]));
+      l += static_cast<std::uint64_t>(same_species[q] & (l >= k));
+      pk[b] = store_k[q]->particle(k);
+      pl[b] = store_l[q]->particle(l);
       dir1[b] = uniform_open(w[0][draw]);
       dir2[b] = uniform_open(w[1][draw]);
       accept_word[b] = w[2][draw];
@@ -114,20 +127,17 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
     // Prefetches back to back, not between the Philox rounds, where each waited for its address
     // translation (docs/performance.md, event scheme).
     for (std::uint64_t b = 0; b < m; ++b) {
-      const PairCoefficients& p = pairs[one_pair ? 0 : qs[b]];
-      state.species[p.i].prefetch(ks[b]);
-      state.species[p.j].prefetch(ls[b]);
+      pk[b].prefetch();
+      pl[b].prefetch();
     }
     unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(sx),
                  std::span(sy), std::span(sz));  // the same bits as unit_vector, in SIMD
     for (std::uint64_t b = 0; b < m; ++b) {
       const std::size_t q = one_pair ? 0 : qs[b];
       const PairCoefficients& p = pairs[q];
-      SpeciesStore& sa = state.species[p.i];
-      SpeciesStore& sb = state.species[p.j];
       const Vec3 sigma{sx[b], sy[b], sz[b]};
-      Vec3 vk = sa.velocity(ks[b]);
-      Vec3 vl = sb.velocity(ls[b]);
+      Vec3 vk = pk[b].velocity();
+      Vec3 vl = pl[b].velocity();
       Vec3 g = vk - vl;
       if constexpr (Shift::active) g = shift.relative_velocity(vk, vl, sigma, p);
       const double g_sigma = dot(g, sigma);
@@ -140,8 +150,8 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
         continue;
       }
       inelastic_collision(vk, vl, sigma, g_sigma, p);
-      sa.set_velocity(ks[b], vk);
-      sb.set_velocity(ls[b], vl);
+      pk[b].set_velocity(vk);
+      pl[b].set_velocity(vl);
       ++tally[q].collisions;
       tally[q].twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
       if constexpr (Shift::active) {  // collide/enskog_shear_shift.hpp
