@@ -406,7 +406,7 @@ void check_hand_matches_library() {
       const Vec3 v = state.species[0].velocity(k);
       hand[k] = {v.x, v.y, v.z, 0.0};
     }
-    double omega_library = pairs[0].rate_prefactor;  // low: every g.sigma > 1 updates it
+    double omega_library = pairs[0].rate_prefactor;  // low: every |g| > 4 updates it
     double omega_hand = omega_library;
     std::uint64_t collisions = 0, updates = 0;
     for (int s = 0; s < 3; ++s, ++state.step) {

@@ -5,14 +5,16 @@
 //
 // Same algorithm and random-number layout as collide_step<HardSphere> (kernel/schemes/collision_stage.hpp,
 // 000 sec. 3): candidate s of step t uses Philox block (collision_pair, 0, t, 2 s) for the indices k and
-// l != k, block 2 s + 1 for the direction (words 0, 1) and the acceptance uniform (word 2); candidates
+// l != k, block 2 s + 1 for the direction n (words 0, 1) and the acceptance uniform (word 2); acceptance
+// on the mean of omega over sigma-hat, prefactor |g| / 4, then sigma-hat = (g-hat + n) / |g-hat + n|
+// (collide/impact_direction.hpp); candidates
 // are drawn in batches of 64 (Philox over the batch's counters as arrays, directions in SIMD) with their
 // records prefetched back to back, then processed in order. The result is the
 // same bits as collide_step on the same state and seed (checked at the start of bench_effects).
 //
 // What it leaves out of the generic stage: the pair table (the constants are locals), the interleaving
 // of species pairs (no pair draw, no per-candidate pair lookup), the Kernel template (omega = prefactor
-// g.sigma inline), the effects, and the tally and majorant held through references (here locals that
+// |g| / 4 inline), the effects, and the tally and majorant held through references (here locals that
 // stay in registers). The velocity record is the library's 32-byte (x, y, z, aux) record in a huge-page
 // buffer, since that layout is a separate, measured choice (perf/bench_layout.cpp). Not used by the
 // library.
@@ -89,19 +91,23 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
     unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(sx),
                  std::span(sy), std::span(sz));
     for (std::uint64_t b = 0; b < m; ++b) {
-      const Vec3 s{sx[b], sy[b], sz[b]};
       HandRecord& a = v[ks[b]];
       HandRecord& e = v[ls[b]];
       const double gx = a.x - e.x, gy = a.y - e.y, gz = a.z - e.z;
-      const double g_sigma = gx * s.x + gy * s.y + gz * s.z;
-      if (g_sigma <= 0.0) continue;  // Theta(g.sigma)
-      const double omega = prefactor * g_sigma;
+      const double g2 = gx * gx + gy * gy + gz * gz;
+      const double omega = prefactor * (0.25 * std::sqrt(g2));  // the mean of prefactor Theta(g.sigma) g.sigma
       if (omega > majorant) {
         majorant = omega;  // majorant exceeded: accept and update (000 sec. 3)
         ++t.majorant_updates;
       } else if (uniform_open(accept_word[b]) * majorant > omega) {
         continue;
       }
+      const double g_norm = std::sqrt(g2);  // sigma-hat along g-hat + n
+      const double hx = gx + g_norm * sx[b], hy = gy + g_norm * sy[b], hz = gz + g_norm * sz[b];
+      const double inverse = 1.0 / std::sqrt(hx * hx + hy * hy + hz * hz);
+      const Vec3 s{inverse * hx, inverse * hy, inverse * hz};
+      const double g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
+      if (!(g_sigma > 0.0)) continue;  // g + |g| n = 0: probability zero
       const double h = 0.5 * (one_plus_alpha * g_sigma);  // equal masses: mu = 1/2
       a.x -= h * s.x;                                     // 000 eq. (14)
       a.y -= h * s.y;
@@ -125,7 +131,7 @@ class HandHcs {
  public:
   static constexpr double rescale_factor = 1.25;  // as Dsmc
 
-  /// `c0`: the n initial stored velocities with scale log_u; initial majorant as Dsmc's, 2 max |c|.
+  /// `c0`: the n initial stored velocities with scale log_u; initial majorant as Dsmc's, prefactor 2 max |c| / 4.
   template <class Velocities>
   HandHcs(const Velocities& c0, std::uint64_t n, double log_u, const HandConstants& constants, const RandomStream& rng)
       : v_(n), n_(n), c_(constants), rng_(rng), log_u_(log_u) {
@@ -137,7 +143,8 @@ class HandHcs {
     rescale();
     for (std::uint64_t k = 0; k < n; ++k)
       max2 = std::max(max2, v_[k].x * v_[k].x + v_[k].y * v_[k].y + v_[k].z * v_[k].z);
-    omega_max_ = c_.rate_prefactor * 2.0 * std::sqrt(max2);
+    const double max_speed = std::sqrt(max2);
+    omega_max_ = c_.rate_prefactor * (0.25 * (max_speed + max_speed));  // majorant_bound<NoCollisionShift>
     rescales_ = 0;
   }
 

@@ -1,9 +1,14 @@
 // The post-collision rule (000 eqs. 14-15) conserves momentum to rounding and loses exactly
-// (1 - alpha^2) m_i m_j / (2 (m_i + m_j)) (g.sigma)^2 of kinetic energy.
+// (1 - alpha^2) m_i m_j / (2 (m_i + m_j)) (g.sigma)^2 of kinetic energy; the impact direction of an
+// accepted pair (collide/impact_direction.hpp) has the density Theta(g.sigma) (g.sigma) / (pi |g|).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 
+#include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
@@ -72,4 +77,48 @@ TEST(CollisionRule, PairCoefficientsFollowThePaper) {
   EXPECT_DOUBLE_EQ(p.rate_prefactor, 4.0 * M_PI * 1.5 * 1.5 * 0.5);  // 4 pi sigma_12^2 n_2
   EXPECT_DOUBLE_EQ(pairs[2].rate_prefactor, 4.0 * M_PI * 1.5 * 1.5 * 2.0);  // (1, 0): n_1
   EXPECT_DOUBLE_EQ(p.energy_loss, 0.5 * 0.75 * 3.0 / 4.0);
+}
+
+// Given g, cos(theta) = g-hat.sigma-hat has the density 2 cos(theta) on (0, 1], so cos^2(theta) is uniform,
+// and the azimuth about g-hat is uniform: chi-square tests of both (20 bins each, 10^6 draws, the 0.999
+// quantile at 19 degrees of freedom), and g.sigma = |g| cos(theta), |sigma-hat| = 1 to rounding. Three g: along
+// an axis, a generic direction, and a short one (the scale of g must not matter).
+TEST(ImpactDirection, HasTheDensityOfTheCollisionKernel) {
+  constexpr int bins = 20, n = 1'000'000;
+  constexpr double chi2_999_19 = 43.8202;
+  const RandomStream rng(20261201, 3);
+  for (const Vec3 g : {Vec3{0.0, 0.0, 2.5}, Vec3{-1.3, 0.4, 0.9}, Vec3{3e-9, -2e-9, 1e-9}}) {
+    SCOPED_TRACE(testing::Message() << "g = (" << g.x << ", " << g.y << ", " << g.z << ")");
+    const double g_norm = norm(g);
+    const Vec3 e3 = (1.0 / g_norm) * g;  // a frame about g-hat for the azimuth
+    const Vec3 helper = std::abs(e3.x) < 0.9 ? Vec3{1.0, 0.0, 0.0} : Vec3{0.0, 1.0, 0.0};
+    const Vec3 t = helper - dot(helper, e3) * e3;
+    const Vec3 e1 = (1.0 / norm(t)) * t;
+    const Vec3 e2{e3.y * e1.z - e3.z * e1.y, e3.z * e1.x - e3.x * e1.z, e3.x * e1.y - e3.y * e1.x};
+    std::array<int, bins> cos2_counts{}, azimuth_counts{};
+    double worst_norm = 0.0, worst_g_sigma = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const RandomBlock r = rng.block(RngPurpose::collision_pair, 0, 0, static_cast<std::uint64_t>(k));
+      const ImpactDirection d = impact_direction(g, g_norm, unit_vector(uniform_open(r[0]), uniform_open(r[1])));
+      ASSERT_GT(d.g_sigma, 0.0);
+      const double c = dot(d.sigma, e3);
+      worst_norm = std::max(worst_norm, std::abs(norm(d.sigma) - 1.0));
+      worst_g_sigma = std::max(worst_g_sigma, std::abs(d.g_sigma - g_norm * c) / g_norm);
+      ++cos2_counts[std::min(static_cast<int>(c * c * bins), bins - 1)];
+      const double phi = std::atan2(dot(d.sigma, e2), dot(d.sigma, e1));  // (-pi, pi]
+      ++azimuth_counts[std::min(static_cast<int>((phi / (2.0 * std::numbers::pi) + 0.5) * bins), bins - 1)];
+    }
+    const auto chi2 = [&](const std::array<int, bins>& counts) {
+      double sum = 0.0;
+      for (int c : counts) sum += (c - n / bins) * (c - n / bins) / static_cast<double>(n / bins);
+      return sum;
+    };
+    EXPECT_LT(chi2(cos2_counts), chi2_999_19) << "cos^2 of the angle to g";
+    EXPECT_LT(chi2(azimuth_counts), chi2_999_19) << "azimuth about g";
+    // sigma-hat = h / |h| is a unit vector to rounding; near grazing incidence the rounding of h = g + |g| n
+    // is divided by |h| (|h| / |g| = (2 (1 + g-hat.n))^1/2 with 1 + g-hat.n uniform on (0, 2): its smallest
+    // value in 10^6 draws is about 2e-6, so |h| / |g| about 2e-3), where g.sigma is itself near zero.
+    EXPECT_LT(worst_norm, 1e-15);
+    EXPECT_LT(worst_g_sigma, 1e-12);
+  }
 }

@@ -1,10 +1,19 @@
 #pragma once
 // The collision stage of one step of the time-stepped ESMC/DSMC scheme (000 sec. 3). For each ordered
 // species pair (i, j) a given number of candidate pairs {k, l} (k of species i, l of species j, l != k
-// when i = j) chosen with equiprobability; for each, a direction sigma-hat uniform on the sphere,
-// acceptance with probability Theta(g.sigma) omega_kl / omega_max^(ij), and the post-collision rule of
-// 000 eqs. (14-15). When omega_kl exceeds the majorant, the collision is accepted and
-// omega_max^(ij) := omega_kl (000 sec. 3).
+// when i = j) chosen with equiprobability, each accepted with probability omega / omega_max^(ij), and the
+// post-collision rule of 000 eqs. (14-15) for the accepted ones. When omega exceeds the majorant, the
+// collision is accepted and omega_max^(ij) := omega (000 sec. 3). Two forms of the acceptance, the same
+// law:
+//  - With a collision shift (the Enskog gas under shear), the paper's: a direction sigma-hat uniform on
+//    the sphere first, omega = omega_kl(sigma-hat) = prefactor rate(g.sigma, |g|^2), zero when g.sigma <= 0.
+//  - Otherwise the direction after the acceptance: omega = prefactor mean_rate(|g|^2), the mean of
+//    omega_kl over sigma-hat (collide/hard_sphere.hpp), then sigma-hat from its conditional law given the
+//    collision, density proportional to Theta(g.sigma) (g.sigma) (collide/impact_direction.hpp). The
+//    pair collides at the same rate with the same law of sigma-hat, but a majorant of the mean is about
+//    a quarter of a majorant of omega_kl, so a step needs about four times fewer candidates for the same
+//    collisions (Maxwell: every candidate collides). The shift makes g depend on sigma-hat, so there the
+//    mean has no closed form and the paper's form stays.
 //
 // The candidates of the different pairs are interleaved in a uniformly random order (each next
 // candidate belongs to pair q with probability remaining_q / remaining), not run pair after pair as the
@@ -24,6 +33,7 @@
 #include <span>
 
 #include "kernel/collide/enskog_shear_shift.hpp"
+#include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/batch_variates.hpp"
@@ -43,6 +53,17 @@ struct CollisionTally {
   double twice_energy_shear_work = 0.0;  // 2 x the energy the shift put in: -2 J s per collision
   SymTensor transfer;                    // sum over collisions of J sigma_ij sigma-hat sigma-hat (000 eq. 18)
 };
+
+/// The initial majorant omega_max^(ij) for relative speeds up to U (stored units), in the form of the
+/// acceptance collide_step uses with this Shift: a bound on omega_kl with a shift, on its mean over
+/// sigma-hat without.
+template <class Shift, class Kernel>
+double majorant_bound(const Kernel& kernel, const PairCoefficients& p, double relative_speed) noexcept {
+  if constexpr (Shift::active)
+    return p.rate_prefactor * kernel.bound(relative_speed);
+  else
+    return p.rate_prefactor * kernel.mean_bound(relative_speed);
+}
 
 namespace detail {
 
@@ -135,19 +156,38 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
     for (std::uint64_t b = 0; b < m; ++b) {
       const std::size_t q = one_pair ? 0 : qs[b];
       const PairCoefficients& p = pairs[q];
-      const Vec3 sigma{sx[b], sy[b], sz[b]};
+      const Vec3 n{sx[b], sy[b], sz[b]};  // uniform on the sphere
       Vec3 vk = pk[b].velocity();
       Vec3 vl = pl[b].velocity();
-      Vec3 g = vk - vl;
-      if constexpr (Shift::active) g = shift.relative_velocity(vk, vl, sigma, p);
-      const double g_sigma = dot(g, sigma);
-      if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
-      const double omega = p.rate_prefactor * kernel.rate(g_sigma, norm2(g));
-      if (omega > majorant[q]) {
-        majorant[q] = omega;
-        ++tally[q].majorant_updates;
-      } else if (uniform_open(accept_word[b]) * majorant[q] > omega) {
-        continue;
+      Vec3 sigma = n;
+      double g_sigma;
+      if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
+        const Vec3 g = shift.relative_velocity(vk, vl, sigma, p);
+        g_sigma = dot(g, sigma);
+        if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
+        const double omega = p.rate_prefactor * kernel.rate(g_sigma, norm2(g));
+        if (omega > majorant[q]) {
+          majorant[q] = omega;
+          ++tally[q].majorant_updates;
+        } else if (uniform_open(accept_word[b]) * majorant[q] > omega) {
+          continue;
+        }
+      } else {  // the mean over sigma-hat first, then sigma-hat given the collision
+        const Vec3 g = vk - vl;
+        const double g2 = norm2(g);
+        if constexpr (!Kernel::constant_mean_rate) {  // Maxwell: omega = omega_max, every candidate collides
+          const double omega = p.rate_prefactor * kernel.mean_rate(g2);
+          if (omega > majorant[q]) {
+            majorant[q] = omega;
+            ++tally[q].majorant_updates;
+          } else if (uniform_open(accept_word[b]) * majorant[q] > omega) {
+            continue;
+          }
+        }
+        const ImpactDirection d = impact_direction(g, std::sqrt(g2), n);
+        if (!(d.g_sigma > 0.0)) continue;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
+        sigma = d.sigma;
+        g_sigma = d.g_sigma;
       }
       inelastic_collision(vk, vl, sigma, g_sigma, p);
       pk[b].set_velocity(vk);
@@ -170,7 +210,8 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
 }  // namespace detail
 
 /// Random words per candidate s of the step: block 2s gives the two particle indices (64 bits each),
-/// block 2s + 1 the direction (two 32-bit uniforms), the acceptance uniform and the pair choice.
+/// block 2s + 1 the direction n (two 32-bit uniforms), the acceptance uniform and the pair choice.
+/// omega_max is in the form of majorant_bound<Shift>.
 ///
 /// Candidates are drawn in batches of `batch`: the random blocks, pairs and indices of a batch first, with
 /// the two velocity records of each candidate prefetched, then the candidates one by one in order. Two

@@ -72,9 +72,9 @@ class Dsmc {
     rescales_ = 0;
     momentum_removed_ = 0.0;
     log_temperature0_ = log_temperature();
-    // Initial majorant: omega_max^(ij) = 4 pi sigma_ij^2 n_j chi_ij (max_k |c_k| + max_l |c_l|) for hard
-    // spheres (Kernel::bound), an exact bound on omega_kl at t = 0; afterwards it grows when exceeded
-    // (000 sec. 3).
+    // Initial majorant: for hard spheres 4 pi sigma_ij^2 n_j chi_ij (max_k |c_k| + max_l |c_l|), a bound
+    // on omega_kl at t = 0, or a quarter of it, a bound on its mean over sigma-hat, in the form of the
+    // acceptance the collision stage uses (majorant_bound); afterwards it grows when exceeded (000 sec. 3).
     std::vector<double> max_speed;
     for (const SpeciesStore& s : state_.species) {
       double m = 0.0;
@@ -82,7 +82,7 @@ class Dsmc {
       max_speed.push_back(std::sqrt(m));
     }
     for (const PairCoefficients& p : pairs_) {
-      omega_max_.push_back(p.rate_prefactor * kernel_.bound(max_speed[p.i] + max_speed[p.j]));
+      omega_max_.push_back(majorant_bound<Shift>(kernel_, p, max_speed[p.i] + max_speed[p.j]));
       carried_.push_back(0.0);
       pair_totals_.emplace_back();
       step_tallies_.emplace_back();

@@ -21,6 +21,8 @@ double maxwell_temperature_particles(double t, double temperature0, double beta,
 /// step, effects/white_noise.hpp), at t = k dt: T_{k+1} = e^{-kappa dt} T_k + 2 beta dt, i.e.
 /// T_k = T_dt + (T0 - T_dt) e^{-kappa t}, T_dt = 2 beta dt / (1 - e^{-kappa dt}); times (1 - 1/n) for n
 /// particles. The steady state is too hot by T_dt / T_inf - 1 = kappa dt / 2 + O(dt^2) (docs/physics.md).
+/// e^{-kappa dt} is the limit of many particles: with M whole collisions per step the exact factor is
+/// (1 - (1 - alpha^2) / (2 (n - 1)))^M, the same to O(1/n) (tests/test_white_noise.cpp).
 double maxwell_temperature_splitting(double t, double dt, double temperature0, double beta, double rate, double alpha,
                                      double particles) noexcept;
 
