@@ -11,10 +11,10 @@ so that they share the state of the (shared, noisy) machine:
   granmc_over_naive/1e5, /1e6, /1e7    granmc_collide / naive_collide candidates/s at N = 10^5, 10^6, 10^7
                                        (bench_collisions, one size at a time, repetitions interleaved at
                                        random between the two)                                (higher is better)
-  granmc_over_packed_limit/1e5, /1e7   granmc_collide candidates/s over layout_packed_prefetch pairs/s at the
-                                       same N: the collision kernel against the packed-record gather/scatter
-                                       limit. Two programs, run back to back at each size (bench_collisions at
-                                       N, then bench_layout at N), so not the same run    (higher is better)
+  granmc_over_packed_limit/1e5, /1e7   granmc_collide candidates/s over limit_collide pairs/s at the same N:
+                                       the collision kernel against the packed-record gather/scatter limit
+                                       (perf/gather_scatter_limit.hpp), both in the same bench_collisions run,
+                                       repetitions interleaved at random            (higher is better)
   event_maxwell_over_packed_limit/1e5, /1e7
   event_hard_sphere_over_packed_limit/1e5, /1e7
                                        bench_event: the event scheme of 001 (examples 7 and 8, one replica)
@@ -26,9 +26,9 @@ so that they share the state of the (shared, noisy) machine:
   plain_over_hand                      bench_effects: plain / hand_specialised time per candidate
                                                                                                (lower is better)
 
-Order of one round: bench_collisions at 10^5, bench_layout (packed + prefetch only) at 10^5, bench_event
-(event_maxwell and event_hard_sphere, not the event_sync_* parts) at 10^5, bench_collisions at 10^6, the
-same three at 10^7, then
+Order of one round: bench_collisions (granmc, naive and the limit kernel) at 10^5, bench_layout (packed +
+prefetch only, the event scheme's reference) at 10^5, bench_event (event_maxwell and event_hard_sphere, not
+the event_sync_* parts) at 10^5, bench_collisions at 10^6 (granmc and naive), the same three at 10^7, then
 bench_effects (all scenes). Repetitions: each program's default (3, 3, 3 and 5) unless --repetitions.
 --rounds K runs K rounds (DIR/round1 ... DIR/roundK) and takes each ratio's median over the rounds.
 
@@ -66,11 +66,11 @@ INTERLEAVE = "--benchmark_enable_random_interleaving=true"
 # One round: (program, part, --benchmark_filter or None, extra flags), in this order. One size at a time, so
 # that no program rebuilds its 10^7-particle state between interleaved repetitions.
 ROUND = (
-    ("bench_collisions", "1e5", "^(granmc|naive)_collide/100000$", (INTERLEAVE,)),
+    ("bench_collisions", "1e5", "^(granmc|naive|limit)_collide/100000$", (INTERLEAVE,)),
     ("bench_layout", "1e5", "^layout_packed_prefetch/100000$", ()),
     ("bench_event", "1e5", "^event_(maxwell|hard_sphere)/100000$", ()),
     ("bench_collisions", "1e6", "^(granmc|naive)_collide/1000000$", (INTERLEAVE,)),
-    ("bench_collisions", "1e7", "^(granmc|naive)_collide/10000000$", (INTERLEAVE,)),
+    ("bench_collisions", "1e7", "^(granmc|naive|limit)_collide/10000000$", (INTERLEAVE,)),
     ("bench_layout", "1e7", "^layout_packed_prefetch/10000000$", ()),
     ("bench_event", "1e7", "^event_(maxwell|hard_sphere)/10000000$", ()),  # not interleaved: one 10^7 gas at a time
     ("bench_effects", "all", None, ()),  # its defaults: 5 repetitions, interleaved
@@ -181,9 +181,8 @@ def compute_ratios(runs):
     for tag, n in SIZES.items():
         put(f"granmc_over_packed_limit/{tag}",
             _ratio(runs, ("bench_collisions", f"granmc_collide/{n}", "candidates/s"),
-                   ("bench_layout", f"layout_packed_prefetch/{n}", "pairs/s")),
-            "higher", f"granmc_collide candidates/s / layout_packed_prefetch pairs/s at N = {tag} "
-                      "(bench_collisions, then bench_layout)")
+                   ("bench_collisions", f"limit_collide/{n}", "pairs/s")),
+            "higher", f"granmc_collide candidates/s / limit_collide pairs/s at N = {tag} (bench_collisions, same run)")
     for kernel in EVENT_KERNELS:
         for tag, n in SIZES.items():
             put(f"event_{kernel}_over_packed_limit/{tag}",
@@ -387,7 +386,9 @@ def self_test():
         "bench_collisions": {"granmc_collide/100000": {"candidates/s": 11e6},
                              "naive_collide/100000": {"candidates/s": 13e6},
                              "granmc_collide/10000000": {"candidates/s": 10e6},
-                             "naive_collide/10000000": {"candidates/s": 5e6}},
+                             "naive_collide/10000000": {"candidates/s": 5e6},
+                             "limit_collide/100000": {"pairs/s": 140e6},
+                             "limit_collide/10000000": {"pairs/s": 36e6}},
         "bench_layout": {"layout_packed_prefetch/100000": {"pairs/s": 150e6},
                          "layout_packed_prefetch/10000000": {"pairs/s": 38e6},
                          "layout_soa/100000": {"pairs/s": 80e6}},
@@ -453,9 +454,11 @@ def self_test():
         (("bench_collisions", "granmc_collide/100000", "candidates/s", 1.5), False, "granmc 50 % faster: improved, "
          "not flagged", set()),
         (("bench_layout", "layout_packed_prefetch/10000000", "pairs/s", 1.2), True,
-         "the limit 20 % faster (granmc and event the same): the three 1e7 limit ratios flagged",
-         {"granmc_over_packed_limit/1e7", "event_maxwell_over_packed_limit/1e7",
-          "event_hard_sphere_over_packed_limit/1e7"}),
+         "bench_layout's limit 20 % faster (event the same): the two event 1e7 limit ratios flagged",
+         {"event_maxwell_over_packed_limit/1e7", "event_hard_sphere_over_packed_limit/1e7"}),
+        (("bench_collisions", "limit_collide/10000000", "pairs/s", 1.2), True,
+         "bench_collisions' limit 20 % faster (granmc the same): granmc_over_packed_limit/1e7 flagged",
+         {"granmc_over_packed_limit/1e7"}),
         (("bench_event", "event_hard_sphere/10000000", "candidates/s", 0.8), True,
          "event hard spheres 20 % slower at 1e7: flagged", {"event_hard_sphere_over_packed_limit/1e7"}),
         (("bench_event", "event_maxwell/100000", "candidates/s", 0.8), True,
@@ -529,7 +532,8 @@ def self_test():
             with open(os.path.join(d, f"bench_collisions.{part}.json"), "w") as f:
                 json.dump(synthetic_report({k: v for k, v in medians["bench_collisions"].items()
                                             if k.endswith("/" + n)}), f)
-        check(set(compute_ratios(load_dir(d))) == {"granmc_over_naive/1e5", "granmc_over_naive/1e7"},
+        check(set(compute_ratios(load_dir(d))) == {"granmc_over_naive/1e5", "granmc_over_naive/1e7",
+                                                   "granmc_over_packed_limit/1e5", "granmc_over_packed_limit/1e7"},
               "bench_collisions.1e5.json and bench_collisions.1e7.json are merged")
         for k, factor in enumerate((1.0, 0.5, 1.1, 1.2), start=1):  # round 2: a 50 % outlier
             r = os.path.join(d, f"round{k}")

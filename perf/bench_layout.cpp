@@ -2,11 +2,10 @@
 // gather + scatter, as the collision stage does it, with one array per component (SoA: x[], y[], z[])
 // against packed 32-byte records (x, y, z, aux), at N = 10^5 (fits in L2 + L3) and N = 10^7 (does not).
 //
-// Each pair: two indices k, l uniform on {0..N-1} and a direction from a table of 8 unit vectors, all from
-// one inline splitmix64 generator (the same sequence for every layout); read both velocities, apply an
-// elastic collision along the direction (g.s, then v_k -= (g.s) s, v_l += (g.s) s: energy-conserving, so
-// the values stay normal over any number of iterations), write both back. Both layouts use granmc's
-// AlignedBuffer (2 MiB alignment and MADV_HUGEPAGE for large buffers), so they differ only in layout.
+// The pairs, the packed layout and the two loops are perf/gather_scatter_limit.hpp's (the packed layout
+// with prefetch is the limit kernel bench_collisions runs beside the collision stage). Both layouts use
+// granmc's AlignedBuffer (2 MiB alignment and MADV_HUGEPAGE for large buffers), so they differ only in
+// layout.
 //
 // Besides the two plain loops, two "prefetch" variants generate the pairs kPrefetchDistance ahead
 // and prefetch their cache lines (2 for packed, 6 for SoA): not part of the layout decision, but the
@@ -27,53 +26,17 @@
 
 #include "kernel/core/aligned_buffer.hpp"
 #include "perf/bench_common.hpp"
+#include "perf/gather_scatter_limit.hpp"
 
 namespace {
 
 using granmc::AlignedBuffer;
+using namespace granmc::perf;
 
 constexpr std::uint64_t kPairsPerIteration = 1'000'000;
-constexpr std::uint64_t kPrefetchDistance = 16;
 constexpr std::int64_t kSizes[] = {100'000, 10'000'000};
 
-struct SplitMix64 {
-  std::uint64_t s;
-  std::uint64_t next() noexcept {
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-};
-
-struct Pair {
-  std::uint64_t k, l;
-  unsigned dir;
-};
-
-inline Pair next_pair(SplitMix64& gen, std::uint64_t n) noexcept {
-  __extension__ using uint128 = unsigned __int128;
-  const std::uint64_t r1 = gen.next();
-  const std::uint64_t r2 = gen.next();
-  return {static_cast<std::uint64_t>((static_cast<uint128>(r1) * n) >> 64),
-          static_cast<std::uint64_t>((static_cast<uint128>(r2) * n) >> 64), static_cast<unsigned>(r2 & 7u)};
-}
-
-struct Direction {
-  double x, y, z;
-};
-// The 8 unit vectors (+-1, +-1, +-1) / sqrt(3).
-constexpr double kInvSqrt3 = 0.57735026918962576451;
-constexpr Direction kDirections[8] = {
-    {kInvSqrt3, kInvSqrt3, kInvSqrt3},   {kInvSqrt3, kInvSqrt3, -kInvSqrt3},   {kInvSqrt3, -kInvSqrt3, kInvSqrt3},
-    {kInvSqrt3, -kInvSqrt3, -kInvSqrt3}, {-kInvSqrt3, kInvSqrt3, kInvSqrt3},   {-kInvSqrt3, kInvSqrt3, -kInvSqrt3},
-    {-kInvSqrt3, -kInvSqrt3, kInvSqrt3}, {-kInvSqrt3, -kInvSqrt3, -kInvSqrt3}};
-
-inline double initial_value(SplitMix64& gen) noexcept {
-  return static_cast<double>(gen.next() >> 11) * 0x1p-52 - 1.0;  // uniform on [-1, 1)
-}
-
-// ---- the two layouts -----------------------------------------------------------------------------
+// ---- the SoA layout (the packed one is in gather_scatter_limit.hpp) ------------------------------
 
 struct SoaLayout {
   explicit SoaLayout(std::size_t n) : x(n), y(n), z(n) {
@@ -102,70 +65,6 @@ struct SoaLayout {
   }
   AlignedBuffer<double> x, y, z;
 };
-
-struct PackedLayout {
-  struct alignas(32) Record {
-    double v[3];
-    double aux;
-  };
-  static_assert(sizeof(Record) == 32);
-
-  explicit PackedLayout(std::size_t n) : r(n) {
-    SplitMix64 gen{1};
-    for (std::size_t k = 0; k < n; ++k) {
-      r[k].v[0] = initial_value(gen);
-      r[k].v[1] = initial_value(gen);
-      r[k].v[2] = initial_value(gen);
-      r[k].aux = 0.0;
-    }
-  }
-  std::size_t size() const noexcept { return r.size(); }
-  void prefetch(std::uint64_t k) const noexcept { __builtin_prefetch(&r[k], 1, 3); }
-  void collide(std::uint64_t k, std::uint64_t l, const Direction& s) noexcept {
-    Record& a = r[k];
-    Record& b = r[l];
-    const double gx = a.v[0] - b.v[0], gy = a.v[1] - b.v[1], gz = a.v[2] - b.v[2];
-    const double gs = gx * s.x + gy * s.y + gz * s.z;
-    a.v[0] -= gs * s.x;
-    a.v[1] -= gs * s.y;
-    a.v[2] -= gs * s.z;
-    b.v[0] += gs * s.x;
-    b.v[1] += gs * s.y;
-    b.v[2] += gs * s.z;
-  }
-  AlignedBuffer<Record> r;
-};
-
-template <class Layout>
-void run_pairs(Layout& lay, SplitMix64& gen, std::uint64_t pairs) noexcept {
-  const std::uint64_t n = lay.size();
-  for (std::uint64_t c = 0; c < pairs; ++c) {
-    const Pair p = next_pair(gen, n);
-    lay.collide(p.k, p.l, kDirections[p.dir]);
-  }
-}
-
-/// The same pairs in the same order, generated kPrefetchDistance ahead and prefetched.
-template <class Layout>
-void run_pairs_prefetched(Layout& lay, SplitMix64& gen, std::uint64_t pairs) noexcept {
-  const std::uint64_t n = lay.size();
-  Pair ring[kPrefetchDistance];
-  const std::uint64_t ahead = pairs < kPrefetchDistance ? pairs : kPrefetchDistance;
-  for (std::uint64_t c = 0; c < ahead; ++c) {
-    ring[c] = next_pair(gen, n);
-    lay.prefetch(ring[c].k);
-    lay.prefetch(ring[c].l);
-  }
-  for (std::uint64_t c = 0; c < pairs; ++c) {
-    Pair& slot = ring[c % kPrefetchDistance];
-    lay.collide(slot.k, slot.l, kDirections[slot.dir]);
-    if (c + kPrefetchDistance < pairs) {
-      slot = next_pair(gen, n);
-      lay.prefetch(slot.k);
-      lay.prefetch(slot.l);
-    }
-  }
-}
 
 // One buffer per layout, kept across Google Benchmark's calls of the same size.
 template <class Layout>
