@@ -34,9 +34,13 @@ struct RunArgs {
   bool explain = false;
 };
 
-/// Candidates per second per thread on this machine's kind (docs/performance.md, N = 10^5 to 10^7),
-/// for the time estimate of --explain.
-constexpr double measured_candidates_per_second = 1.0e7;
+/// Candidates per second per thread on this machine's kind, whole runs on 2 threads, for the time estimate
+/// of --explain (docs/performance.md): time-stepped DSMC, `make hcs-alpha08` (1.45e8 candidates in 2.0 s,
+/// N = 10^5, 2026-12-01: 36 M/s); the event scheme, 001 Example 8 at n = 10^7 (4.72e10 candidates in
+/// 1885 s: 12.5 M/s; Maxwell kernels run about 2.5 times faster, so this is the slow end).
+double measured_candidates_per_second(const Scene& scene) noexcept {
+  return scene.run.method == Method::event ? 1.25e7 : 3.6e7;
+}
 
 int explain_command(const Scene& full_scene, const RunArgs& args) {
   const Place at = place();
@@ -64,9 +68,10 @@ int explain_command(const Scene& full_scene, const RunArgs& args) {
     std::printf("work         about %.3g collision events (one intruder per replica)\n", plan.events);
     return exit_ok;
   }
-  const double seconds = plan.candidates / (measured_candidates_per_second * plan.replicas_in_flight);
-  std::printf("work         %s%.3g candidate pairs, about %.0f s on %d threads at 1e7 candidates/s per thread\n",
-              plan.candidates_upper_bound ? "at most " : "", plan.candidates, seconds, threads);
+  const double rate = measured_candidates_per_second(scene);
+  const double seconds = plan.candidates / (rate * plan.replicas_in_flight);
+  std::printf("work         %s%.3g candidate pairs, about %.0f s on %d threads at %.2g candidates/s per thread\n",
+              plan.candidates_upper_bound ? "at most " : "", plan.candidates, seconds, threads, rate);
   return exit_ok;
 }
 
