@@ -82,8 +82,13 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
   // update below compiles to arithmetic, not to branches.
   std::int64_t cumulative[max_pairs - 1];
   std::uint64_t total = 0;
-  double majorant[max_pairs];
-  CollisionTally tally[max_pairs];
+  // The per-pair state the candidates update, one slot per pair: with one pair a single slot, and the pair's
+  // constants copied to a local, so that the compiler keeps them in registers (the velocity stores could
+  // alias a PairCoefficients in memory) and the one-pair loop matches a hand-written one.
+  constexpr std::size_t slots = one_pair ? 1 : max_pairs;
+  double majorant[slots];
+  CollisionTally tally[slots];
+  const PairCoefficients only_pair = one_pair ? pairs[0] : PairCoefficients{};
   for (std::size_t q = 0; q < n_pairs; ++q) {
     total += candidates[q];
     if (q + 1 < max_pairs) cumulative[q] = static_cast<std::int64_t>(total);
@@ -138,7 +143,7 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
       std::uint64_t l = uniform_index(w[2][pick], w[3][pick], range_l[q]);
       // Uniform over the other N_i - 1 particles; branch-free: a branch here is taken half the time at
       // random, and its mispredictions discard the overlapped work of the next candidates.
-      l += static_cast<std::uint64_t>(same_species[q] & (l >= k));
+      l += static_cast<std::uint64_t>((one_pair || same_species[q]) & (l >= k));  // one pair: one species
       pk[b] = store_k[q]->particle(k);
       pl[b] = store_l[q]->particle(l);
       dir1[b] = uniform_open(w[0][draw]);
@@ -155,13 +160,15 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
                  std::span(sy), std::span(sz));  // the same bits as unit_vector, in SIMD
     for (std::uint64_t b = 0; b < m; ++b) {
       const std::size_t q = one_pair ? 0 : qs[b];
-      const PairCoefficients& p = pairs[q];
-      const Vec3 n{sx[b], sy[b], sz[b]};  // uniform on the sphere
+      const PairCoefficients& p = one_pair ? only_pair : pairs[q];
       Vec3 vk = pk[b].velocity();
       Vec3 vl = pl[b].velocity();
-      Vec3 sigma = n;
+      // n = (sx, sy, sz)[b], uniform on the sphere, is read where it is used: read before the acceptance it
+      // holds registers the one-pair loop needs (callgrind, docs/performance.md).
+      Vec3 sigma;
       double g_sigma;
       if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
+        sigma = {sx[b], sy[b], sz[b]};
         const Vec3 g = shift.relative_velocity(vk, vl, sigma, p);
         g_sigma = dot(g, sigma);
         if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
@@ -184,7 +191,7 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
             continue;
           }
         }
-        const ImpactDirection d = impact_direction(g, std::sqrt(g2), n);
+        const ImpactDirection d = impact_direction(g, std::sqrt(g2), {sx[b], sy[b], sz[b]});
         if (!(d.g_sigma > 0.0)) continue;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
         sigma = d.sigma;
         g_sigma = d.g_sigma;
