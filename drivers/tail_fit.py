@@ -36,7 +36,10 @@ confidence half-width (lambda_p = 3.2, 001 eq. 31), and on the pooled histogram:
   least squares, weights the shell counts; b by a grid then a fine search), so the core's offset D does not
   enter. On a narrow window b is correlated with a and its CI is wider.
 Writes OUT_DIR/tail.json, OUT_DIR/table.md, OUT_DIR/figure.png (y_k against x_k as in 001 Figs. 5-7, with
-the lines y = x - c, 1.25 x - c, 1.5 x - c for comparison, and the histogram).
+the lines y = x - c, 1.25 x - c, 1.5 x - c for comparison, and the histogram), and OUT_DIR/histograms.png
+(001 Fig. 4: the shell fractions of the final state against those of the initial Maxwellian, exact at the
+run's initial temperature, on [0, R/4] and, in log scale, the overpopulated tail on [R/20, R/4]; the
+paper's [0, 10] and [2, 10] for its R = 40).
 """
 import argparse
 import json
@@ -58,6 +61,24 @@ def load_counts(path):
         method = h["/"].attrs["method"]
         method = method.decode() if isinstance(method, bytes) else str(method)
     return counts, edges, method
+
+
+def initial_temperature_and_mass(path):
+    """T at the first sample (t = 0, the replica mean) and the species' mass, of an event-scheme run."""
+    with h5py.File(path, "r") as h:
+        species = [k for k in h["/species"].keys()]
+        mass = float(h[f"/species/{species[0]}"].attrs["mass"])
+        temperature = math.exp(float(h["/log_temperature/mean"][0]))
+    return temperature, mass
+
+
+def maxwell_shell_fractions(edges, temperature, mass):
+    """P(r_(k-1) <= |v| < r_k) for a Maxwellian with <v_i^2> = T / m: the chi law with 3 degrees of freedom,
+    F(r) = erf(r / (s sqrt 2)) - sqrt(2 / pi) (r / s) exp(-r^2 / (2 s^2)), s^2 = T / m."""
+    s = math.sqrt(temperature / mass)
+    cdf = np.array([math.erf(r / (s * math.sqrt(2.0))) - math.sqrt(2.0 / math.pi) * (r / s) * math.exp(-0.5 * (r / s) ** 2)
+                    for r in edges])
+    return np.diff(cdf)
 
 
 def shell_volumes(edges):
@@ -189,6 +210,7 @@ def main():
         f.write(f"| eq38 ({args.quantity}) | {where} | {fitted}/{replicas} | {b_mean:.4f} | {b_ci:.4f} | "
                 f"{b_pooled:.4f} | {th} |\n")
     plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, os.path.join(args.out, "figure.png"))
+    plot_histograms(args, counts, edges, *initial_temperature_and_mass(args.run), os.path.join(args.out, "histograms.png"))
     if not math.isfinite(b_mean):
         print("tail_fit.py: no shell of the window has 0 < f_k < f_k0 in every replica; widen the window or run more "
               "particles")
@@ -224,6 +246,33 @@ def plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, path
     ax2.set_ylabel("y_k = ln(ln f_k0 - ln f_k)")
     ax2.legend(fontsize="small")
     fig.suptitle(f"001 sec. 5.3: {args.label or args.run}", fontsize="small")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+def plot_histograms(args, counts, edges, temperature0, mass, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    final = counts.sum(axis=0) / counts.sum()
+    initial = maxwell_shell_fractions(edges, temperature0, mass)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    radius = edges[-1]
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for ax, (lo, hi), log in ((ax1, (0.0, radius / 4), False), (ax2, (radius / 20, radius / 4), True)):
+        sel = (centres >= lo) & (centres <= hi)
+        ax.plot(centres[sel], initial[sel], "k-", lw=2.2, label=f"initial Maxwellian, T = {temperature0:.4g} (exact)")
+        keep = sel & (final > 0)
+        ax.plot(centres[keep], final[keep], "k-", lw=0.9, label="final, all replicas")
+        if log:
+            ax.set_yscale("log")
+        ax.set_xlim(lo, hi)
+        ax.set_xlabel("r = |v|")
+        ax.set_ylabel("f_k (shell fraction, 001 eq. 37)")
+        ax.legend(fontsize="small")
+    ax2.set_title("the overpopulated tail")
+    fig.suptitle(f"001 Fig. 4: initial and final histograms, {args.label or args.run}", fontsize="small")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
 
