@@ -99,7 +99,7 @@ fig-001-3: build
 relaxation-001: table-001-1 table-001-2 fig-001-3
 
 # Paper 001 sec. 5.3: tail exponents (drivers/tails.py, drivers/tail_fit.py). tails-001 runs Examples 7-9 at
-# n = 10^6, N = 10 (minutes); tails-001-full at the paper's n = 10^7, N = 100 (12, 31 and 17 min on 2 cores,
+# n = 10^6, N = 10 (half a minute); tails-001-full at the paper's n = 10^7, N = 100 (12, 31 and 17 min on 2 cores,
 # 640 MB; docs/performance.md).
 TAILS = $(PYTHON) drivers/tails.py --granmc $(GRANMC)
 tails-001: build
