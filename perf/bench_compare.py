@@ -18,18 +18,17 @@ so that they share the state of the (shared, noisy) machine:
   event_maxwell_over_packed_limit/1e5, /1e7
   event_hard_sphere_over_packed_limit/1e5, /1e7
                                        bench_event: the event scheme of 001 (examples 7 and 8, one replica)
-                                       event_maxwell or event_hard_sphere candidates/s over
-                                       layout_packed_prefetch pairs/s at the same N; bench_event runs right
-                                       after bench_layout at each size                    (higher is better)
+                                       event_maxwell or event_hard_sphere candidates/s over limit_pairs
+                                       pairs/s at the same N, the limit kernel in the same bench_event run
+                                                                                          (higher is better)
   effect_over_plain/<scene>            bench_effects: time per candidate of a scene / of plain (one run, 5
                                        repetitions interleaved at random), one per scene     (lower is better)
   plain_over_hand                      bench_effects: plain / hand_specialised time per candidate
                                                                                                (lower is better)
 
-Order of one round: bench_collisions (granmc, naive and the limit kernel) at 10^5, bench_layout (packed +
-prefetch only, the event scheme's reference) at 10^5, bench_event (event_maxwell and event_hard_sphere, not
-the event_sync_* parts) at 10^5, bench_collisions at 10^6 (granmc and naive), the same three at 10^7, then
-bench_effects (all scenes). Repetitions: each program's default (3, 3, 3 and 5) unless --repetitions.
+Order of one round: bench_collisions (granmc, naive and the limit kernel) at 10^5, bench_event
+(event_maxwell, event_hard_sphere and the limit kernel, not the event_sync_* parts) at 10^5,
+bench_collisions at 10^6 (granmc and naive), the same two at 10^7, then bench_effects (all scenes). Repetitions: each program's default (3, 3, 3 and 5) unless --repetitions.
 --rounds K runs K rounds (DIR/round1 ... DIR/roundK) and takes each ratio's median over the rounds.
 
 Without --save it compares the ratios with the baseline (perf/baselines/baseline.json) and prints a table; a
@@ -61,18 +60,16 @@ import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_BASELINE = os.path.join(REPO, "perf", "baselines", "baseline.json")
-PROGRAMS = ("bench_collisions", "bench_layout", "bench_event", "bench_effects")
+PROGRAMS = ("bench_collisions", "bench_event", "bench_effects")
 INTERLEAVE = "--benchmark_enable_random_interleaving=true"
 # One round: (program, part, --benchmark_filter or None, extra flags), in this order. One size at a time, so
 # that no program rebuilds its 10^7-particle state between interleaved repetitions.
 ROUND = (
     ("bench_collisions", "1e5", "^(granmc|naive|limit)_collide/100000$", (INTERLEAVE,)),
-    ("bench_layout", "1e5", "^layout_packed_prefetch/100000$", ()),
-    ("bench_event", "1e5", "^event_(maxwell|hard_sphere)/100000$", ()),
+    ("bench_event", "1e5", "^(event_(maxwell|hard_sphere)|limit_pairs)/100000$", ()),
     ("bench_collisions", "1e6", "^(granmc|naive)_collide/1000000$", (INTERLEAVE,)),
     ("bench_collisions", "1e7", "^(granmc|naive|limit)_collide/10000000$", (INTERLEAVE,)),
-    ("bench_layout", "1e7", "^layout_packed_prefetch/10000000$", ()),
-    ("bench_event", "1e7", "^event_(maxwell|hard_sphere)/10000000$", ()),  # not interleaved: one 10^7 gas at a time
+    ("bench_event", "1e7", "^(event_(maxwell|hard_sphere)|limit_pairs)/10000000$", ()),  # not interleaved: one 10^7 gas at a time
     ("bench_effects", "all", None, ()),  # its defaults: 5 repetitions, interleaved
 )
 DEFAULT_THRESHOLD = 0.10
@@ -187,9 +184,8 @@ def compute_ratios(runs):
         for tag, n in SIZES.items():
             put(f"event_{kernel}_over_packed_limit/{tag}",
                 _ratio(runs, ("bench_event", f"event_{kernel}/{n}", "candidates/s"),
-                       ("bench_layout", f"layout_packed_prefetch/{n}", "pairs/s")),
-                "higher", f"event_{kernel} candidates/s / layout_packed_prefetch pairs/s at N = {tag} "
-                          "(bench_layout, then bench_event)")
+                       ("bench_event", f"limit_pairs/{n}", "pairs/s")),
+                "higher", f"event_{kernel} candidates/s / limit_pairs pairs/s at N = {tag} (bench_event, same run)")
     effects = runs.get("bench_effects", {}).get("medians", {})
     for scene in sorted(effects):
         if scene in (EFFECT_PLAIN, EFFECT_HAND) or EFFECT_COUNTER not in effects[scene]:
@@ -389,9 +385,6 @@ def self_test():
                              "naive_collide/10000000": {"candidates/s": 5e6},
                              "limit_collide/100000": {"pairs/s": 140e6},
                              "limit_collide/10000000": {"pairs/s": 36e6}},
-        "bench_layout": {"layout_packed_prefetch/100000": {"pairs/s": 150e6},
-                         "layout_packed_prefetch/10000000": {"pairs/s": 38e6},
-                         "layout_soa/100000": {"pairs/s": 80e6}},
         "bench_event": {"event_maxwell/100000": {"candidates/s": 15e6, "collisions/s": 15e6, "acceptance": 1.0},
                         "event_hard_sphere/100000": {"candidates/s": 10e6, "collisions/s": 1.8e6,
                                                      "acceptance": 0.18},
@@ -399,7 +392,9 @@ def self_test():
                                                    "acceptance": 1.0},
                         "event_hard_sphere/10000000": {"candidates/s": 7.6e6, "collisions/s": 1.3e6,
                                                        "acceptance": 0.17},
-                        "event_sync_maxwell/10000000": {"particles/s": 66e6}},
+                        "event_sync_maxwell/10000000": {"particles/s": 66e6},
+                        "limit_pairs/100000": {"pairs/s": 150e6},
+                        "limit_pairs/10000000": {"pairs/s": 38e6}},
         "bench_effects": {"plain": {"time/cand": 80e-9}, "white_noise": {"time/cand": 840e-9},
                           "shear": {"time/cand": 100e-9}, "hand_specialised": {"time/cand": 78e-9},
                           "white_noise_apply": {"time/particle": 74e-9}},
@@ -453,8 +448,8 @@ def self_test():
          "naive 15 % faster at 1e5: granmc_over_naive/1e5 flagged", {"granmc_over_naive/1e5"}),
         (("bench_collisions", "granmc_collide/100000", "candidates/s", 1.5), False, "granmc 50 % faster: improved, "
          "not flagged", set()),
-        (("bench_layout", "layout_packed_prefetch/10000000", "pairs/s", 1.2), True,
-         "bench_layout's limit 20 % faster (event the same): the two event 1e7 limit ratios flagged",
+        (("bench_event", "limit_pairs/10000000", "pairs/s", 1.2), True,
+         "bench_event's limit 20 % faster (event the same): the two event 1e7 limit ratios flagged",
          {"event_maxwell_over_packed_limit/1e7", "event_hard_sphere_over_packed_limit/1e7"}),
         (("bench_collisions", "limit_collide/10000000", "pairs/s", 1.2), True,
          "bench_collisions' limit 20 % faster (granmc the same): granmc_over_packed_limit/1e7 flagged",

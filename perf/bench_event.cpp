@@ -27,9 +27,9 @@
 //
 // Counters (rates over CPU time): candidates/s, collisions/s from the difference of tally() before and after
 // the timed loop; acceptance = collisions / candidates (1 for Maxwell); candidates/iter; t, the gas time at
-// the end. event_sync_*: particles/s. A table of the medians follows the runs. The packed-record
-// gather/scatter limit (layout_packed_prefetch of bench_layout.cpp) is not repeated here: perf/bench_compare.py
-// runs bench_layout and then bench_event at each N and forms event_<kernel>_over_packed_limit from the two.
+// the end. event_sync_*: particles/s. limit_pairs/N: the packed-record gather/scatter limit kernel
+// (perf/gather_scatter_limit.hpp, 10^6 pairs per iteration, pairs/s), run after the event benchmarks of the
+// same N, so that event_<kernel>_over_packed_limit comes from one run. A table of the medians follows.
 // Defaults: 3 repetitions, aggregates only, min time 0.5 s; any --benchmark_* flag overrides them.
 #include <benchmark/benchmark.h>
 
@@ -48,6 +48,7 @@
 #include "kernel/core/scene.hpp"
 #include "kernel/schemes/event_white_noise.hpp"
 #include "perf/bench_common.hpp"
+#include "perf/gather_scatter_limit.hpp"
 
 namespace {
 
@@ -156,8 +157,8 @@ void print_table(const perf::RecordingReporter& rep) {
               kRestitution, kBeta);
   std::printf(
       "| kernel | N | candidates/s | collisions/s | acceptance | candidates/iter | sync ms | "
-      "sync share | candidates/s without sync |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+      "sync share | candidates/s without sync | candidates/s / limit pairs/s |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const char* kernel : {"maxwell", "hard_sphere"}) {
     const std::string run = std::string("event_") + kernel, sync = std::string("event_sync_") + kernel;
     const auto runs = rep.counters.find(run);
@@ -171,9 +172,10 @@ void print_table(const perf::RecordingReporter& rep) {
       std::printf("| %s | %s | %.3g | %.3g | %.4f | %.3g | ", kernel, args.c_str(), cand, get("collisions/s"),
                   get("acceptance"), per_iter);
       if (std::isnan(sync_s))
-        std::printf("- | - | - |\n");  // event_sync_* filtered out
+        std::printf("- | - | - | ");  // event_sync_* filtered out
       else
-        std::printf("%.1f | %.0f %% | %.3g |\n", 1e3 * sync_s, 100.0 * sync_s / iter_s, per_iter / (iter_s - sync_s));
+        std::printf("%.1f | %.0f %% | %.3g | ", 1e3 * sync_s, 100.0 * sync_s / iter_s, per_iter / (iter_s - sync_s));
+      std::printf("%.3f |\n", cand / rep.value("limit_pairs", args, "pairs/s"));  // NaN if limit_pairs did not run
     }
   }
 }
@@ -195,6 +197,7 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark("event_sync_hard_sphere", event_sync<IsotropicHardSphereKernel>)
         ->Arg(n)
         ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("limit_pairs", perf::limit_pairs<1'000'000>)->Arg(n)->Unit(benchmark::kMillisecond);
   }
 
   perf::RecordingReporter reporter(isatty(STDOUT_FILENO) != 0);

@@ -3,15 +3,19 @@
 // collision stage does it (read two particles' velocities, write both back), with the particles in packed
 // 32-byte records (x, y, z, aux) and the pairs generated kPrefetchDistance ahead and prefetched. It is
 // the layout decision's measurement (perf/bench_layout.cpp) and the bound the collision stage is
-// compared with in the same run (perf/bench_collisions.cpp, issue 10 item 3).
+// compared with in the same run (perf/bench_collisions.cpp and perf/bench_event.cpp, issue 10 item 3, as
+// the benchmark limit_pairs below).
 //
 // Each pair: two indices k, l uniform on {0..N-1} and a direction from a table of 8 unit vectors, all from
 // one inline splitmix64 generator (the same sequence for every layout); read both velocities, apply an
 // elastic collision along the direction (g.s, then v_k -= (g.s) s, v_l += (g.s) s: energy-conserving, so
 // the values stay normal over any number of iterations), write both back. The buffer is granmc's
 // AlignedBuffer (2 MiB alignment and MADV_HUGEPAGE for large buffers), as SpeciesStore's.
+#include <benchmark/benchmark.h>
+
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include "kernel/core/aligned_buffer.hpp"
 
@@ -118,6 +122,31 @@ void run_pairs_prefetched(Layout& lay, SplitMix64& gen, std::uint64_t pairs) noe
       lay.prefetch(slot.l);
     }
   }
+}
+
+/// The packed layout of n particles, kept across Google Benchmark's calls of the same size.
+inline PackedLayout& limit_layout(std::size_t n) {
+  static std::unique_ptr<PackedLayout> lay;
+  if (!lay || lay->size() != n) {
+    lay.reset();
+    lay = std::make_unique<PackedLayout>(n);
+  }
+  return *lay;
+}
+
+/// The limit kernel as a benchmark: `pairs_per_iteration` prefetched pairs per iteration among bs.range(0)
+/// packed records; counter pairs/s (rate over CPU time).
+template <std::uint64_t pairs_per_iteration>
+void limit_pairs(benchmark::State& bs) {
+  PackedLayout& lay = limit_layout(static_cast<std::size_t>(bs.range(0)));
+  SplitMix64 gen{0x5EEDull};
+  std::uint64_t pairs = 0;
+  for (auto _ : bs) {
+    run_pairs_prefetched(lay, gen, pairs_per_iteration);
+    benchmark::ClobberMemory();
+    pairs += pairs_per_iteration;
+  }
+  bs.counters["pairs/s"] = benchmark::Counter(static_cast<double>(pairs), benchmark::Counter::kIsRate);
 }
 
 }  // namespace granmc::perf
