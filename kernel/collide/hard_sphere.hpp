@@ -9,8 +9,8 @@
 // from_scene(scene) (the kernel's parameters; static members where there are none). Every kernel weighs
 // sigma-hat by Theta(g.sigma) (g.sigma), so its mean over sigma-hat uniform on the sphere is
 // mean_rate(|g|^2) = |g|^lambda / 4 (the mean of Theta(g.sigma) (g.sigma) is |g| / 4), with
-// mean_bound(U) >= mean_rate up to U; constant_mean_rate says the mean is the same for every pair
-// (Maxwell): the collision stage then accepts every candidate without a test (schemes/collision_stage.hpp).
+// mean_bound(U) >= mean_rate up to U (schemes/collision_stage.hpp accepts a pair with probability
+// mean_rate / omega_max).
 #include <cmath>
 
 namespace granmc {
@@ -23,7 +23,6 @@ struct HardSphere {
   /// Rate factor for normal relative speed g_sigma = g.sigma-hat > 0.
   static constexpr double rate(double g_sigma, double /*g2*/) noexcept { return g_sigma; }
   static constexpr double bound(double relative_speed) noexcept { return relative_speed; }
-  static constexpr bool constant_mean_rate = false;
   static double mean_rate(double g2) noexcept { return 0.25 * std::sqrt(g2); }
   static constexpr double mean_bound(double relative_speed) noexcept { return 0.25 * relative_speed; }
 };

@@ -20,7 +20,6 @@ struct VariableHardSpheres {
     return g_sigma * std::pow(g2, 0.5 * (lambda - 1.0));
   }
   [[nodiscard]] double bound(double relative_speed) const noexcept { return std::pow(relative_speed, lambda); }
-  static constexpr bool constant_mean_rate = false;
   [[nodiscard]] double mean_rate(double g2) const noexcept { return 0.25 * std::pow(g2, 0.5 * lambda); }
   [[nodiscard]] double mean_bound(double relative_speed) const noexcept { return 0.25 * std::pow(relative_speed, lambda); }
 };

@@ -182,14 +182,13 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
       } else {  // the mean over sigma-hat first, then sigma-hat given the collision
         const Vec3 g = vk - vl;
         const double g2 = norm2(g);
-        if constexpr (!Kernel::constant_mean_rate) {  // Maxwell: omega = omega_max, every candidate collides
-          const double omega = p.rate_prefactor * kernel.mean_rate(g2);
-          if (omega > majorant[q]) {
-            majorant[q] = omega;
-            ++tally[q].majorant_updates;
-          } else if (uniform_open(accept_word[b]) * majorant[q] > omega) {
-            continue;
-          }
+        // Maxwell: omega = omega_max (majorant_bound), so every candidate passes the test (u < 1).
+        const double omega = p.rate_prefactor * kernel.mean_rate(g2);
+        if (omega > majorant[q]) {
+          majorant[q] = omega;
+          ++tally[q].majorant_updates;
+        } else if (uniform_open(accept_word[b]) * majorant[q] > omega) {
+          continue;
         }
         const ImpactDirection d = impact_direction(g, std::sqrt(g2), {sx[b], sy[b], sz[b]});
         if (!(d.g_sigma > 0.0)) continue;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
