@@ -52,7 +52,9 @@ import numpy as np
 LAMBDA_P = 3.2
 
 
-def load_counts(path):
+def load_run(path):
+    """The shell counts [replicas, shells], the shell edges, the method, T at the first sample (t = 0, the
+    replica mean) and the mass of the (first) species."""
     with h5py.File(path, "r") as h:
         species = [k for k in h["/species"].keys()]
         g = h[f"/species/{species[0]}/speed_distribution"]
@@ -60,16 +62,9 @@ def load_counts(path):
         edges = h["/speed_shell_edges"][()]
         method = h["/"].attrs["method"]
         method = method.decode() if isinstance(method, bytes) else str(method)
-    return counts, edges, method
-
-
-def initial_temperature_and_mass(path):
-    """T at the first sample (t = 0, the replica mean) and the species' mass, of an event-scheme run."""
-    with h5py.File(path, "r") as h:
-        species = [k for k in h["/species"].keys()]
         mass = float(h[f"/species/{species[0]}"].attrs["mass"])
-        temperature = math.exp(float(h["/log_temperature/mean"][0]))
-    return temperature, mass
+        temperature0 = math.exp(float(h["/log_temperature/mean"][0]))
+    return counts, edges, method, temperature0, mass
 
 
 def maxwell_shell_fractions(edges, temperature, mass):
@@ -79,6 +74,10 @@ def maxwell_shell_fractions(edges, temperature, mass):
     cdf = np.array([math.erf(r / (s * math.sqrt(2.0))) - math.sqrt(2.0 / math.pi) * (r / s) * math.exp(-0.5 * (r / s) ** 2)
                     for r in edges])
     return np.diff(cdf)
+
+
+def shell_centres(edges):
+    return 0.5 * (edges[1:] + edges[:-1])
 
 
 def shell_volumes(edges):
@@ -113,7 +112,7 @@ def free_offset_exponent(counts, edges, k0, window):
     if sel.sum() < 4:
         return float("nan")
     volume = shell_volumes(edges)
-    r = 0.5 * (edges[1:] + edges[:-1])[sel]
+    r = shell_centres(edges)[sel]
     y = np.log(counts[sel] / volume[sel])
     w = np.sqrt(counts[sel].astype(float))
 
@@ -155,7 +154,7 @@ def main():
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
 
-    counts, edges, method = load_counts(args.run)
+    counts, edges, method, temperature0, mass = load_run(args.run)
     if method != "event":
         raise SystemExit(f"tail_fit.py: {args.run} is a method {method!r} run; the shells are in velocity units "
                          "only for method \"event\"")
@@ -210,7 +209,7 @@ def main():
         f.write(f"| eq38 ({args.quantity}) | {where} | {fitted}/{replicas} | {b_mean:.4f} | {b_ci:.4f} | "
                 f"{b_pooled:.4f} | {th} |\n")
     plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, os.path.join(args.out, "figure.png"))
-    plot_histograms(args, counts, edges, *initial_temperature_and_mass(args.run), os.path.join(args.out, "histograms.png"))
+    plot_histograms(args, counts, edges, temperature0, mass, os.path.join(args.out, "histograms.png"))
     if not math.isfinite(b_mean):
         print("tail_fit.py: no shell of the window has 0 < f_k < f_k0 in every replica; widen the window or run more "
               "particles")
@@ -227,7 +226,7 @@ def plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, path
     pooled = counts.sum(axis=0)
     k, x, y = xy(pooled, edges, k0, args.quantity)
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
-    centres = 0.5 * (edges[1:] + edges[:-1])
+    centres = shell_centres(edges)
     f = pooled / pooled.sum()
     if args.quantity == "density":
         f = f / shell_volumes(edges)
@@ -257,7 +256,7 @@ def plot_histograms(args, counts, edges, temperature0, mass, path):
 
     final = counts.sum(axis=0) / counts.sum()
     initial = maxwell_shell_fractions(edges, temperature0, mass)
-    centres = 0.5 * (edges[1:] + edges[:-1])
+    centres = shell_centres(edges)
     radius = edges[-1]
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
     for ax, (lo, hi), log in ((ax1, (0.0, radius / 4), False), (ax2, (radius / 20, radius / 4), True)):
