@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -66,20 +65,9 @@ struct SoaLayout {
   AlignedBuffer<double> x, y, z;
 };
 
-// One buffer per layout, kept across Google Benchmark's calls of the same size.
-template <class Layout>
-Layout& layout_for(std::int64_t n) {
-  static std::unique_ptr<Layout> lay;
-  if (!lay || static_cast<std::int64_t>(lay->size()) != n) {
-    lay.reset();
-    lay = std::make_unique<Layout>(static_cast<std::size_t>(n));
-  }
-  return *lay;
-}
-
 template <class Layout, bool prefetched>
 void layout_pairs(benchmark::State& bs) {
-  Layout& lay = layout_for<Layout>(bs.range(0));
+  Layout& lay = layout_for<Layout>(static_cast<std::size_t>(bs.range(0)));  // gather_scatter_limit.hpp
   SplitMix64 gen{0x5EEDull};  // the same pair sequence for every layout
   std::uint64_t pairs = 0;
   for (auto _ : bs) {

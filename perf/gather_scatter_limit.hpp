@@ -124,12 +124,13 @@ void run_pairs_prefetched(Layout& lay, SplitMix64& gen, std::uint64_t pairs) noe
   }
 }
 
-/// The packed layout of n particles, kept across Google Benchmark's calls of the same size.
-inline PackedLayout& limit_layout(std::size_t n) {
-  static std::unique_ptr<PackedLayout> lay;
+/// One buffer of n particles per layout, kept across Google Benchmark's calls of the same size.
+template <class Layout>
+Layout& layout_for(std::size_t n) {
+  static std::unique_ptr<Layout> lay;
   if (!lay || lay->size() != n) {
     lay.reset();
-    lay = std::make_unique<PackedLayout>(n);
+    lay = std::make_unique<Layout>(n);
   }
   return *lay;
 }
@@ -138,7 +139,7 @@ inline PackedLayout& limit_layout(std::size_t n) {
 /// packed records; counter pairs/s (rate over CPU time).
 template <std::uint64_t pairs_per_iteration>
 void limit_pairs(benchmark::State& bs) {
-  PackedLayout& lay = limit_layout(static_cast<std::size_t>(bs.range(0)));
+  PackedLayout& lay = layout_for<PackedLayout>(static_cast<std::size_t>(bs.range(0)));
   SplitMix64 gen{0x5EEDull};
   std::uint64_t pairs = 0;
   for (auto _ : bs) {
