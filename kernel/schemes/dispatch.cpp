@@ -76,7 +76,7 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options, Before... befo
 RunResult run_dsmc_hard_spheres(const Scene& scene, const RunOptions& options) {
   if (scene.shear_rate == 0.0) return run_dsmc<HardSphere, true>(scene, options);
   const LagrangianShear shear{scene.shear_rate, &scene};
-  if (scene.collision.packing_fraction > 0.0)
+  if (has_enskog_shear_shift(scene))
     return run_dsmc<HardSphere, false>(scene, options, shear, EnskogShearShift{scene.shear_rate});
   return run_dsmc<HardSphere, false>(scene, options, shear);
 }
@@ -124,7 +124,7 @@ std::string instantiation_name(const Scene& scene) {
                       : scene.collision.kernel == CollisionKernel::vhs  ? VariableHardSpheres::name
                                                                         : HardSphere::name);
   if (scene.shear_rate != 0.0) name += ", lagrangian-shear";
-  if (scene.shear_rate != 0.0 && scene.collision.packing_fraction > 0.0) name += ", enskog-shear-shift";
+  if (has_enskog_shear_shift(scene)) name += ", enskog-shear-shift";
   if (scene.thermostat.kind == ThermostatKind::gaussian) name += ", gaussian-thermostat";
   if (scene.relaxation) name += ", bgk-relaxation";
   if (scene.thermostat.kind == ThermostatKind::white_noise) name += ", white-noise";

@@ -14,6 +14,13 @@ std::string unsupported_reason(const Scene& scene);
 /// Runs the scene (precondition: unsupported_reason(scene) is empty).
 RunResult run_scene(const Scene& scene, const RunOptions& options);
 
+/// Whether the collision stage shifts the contact velocity (shear in the Enskog gas,
+/// collide/enskog_shear_shift.hpp); it then keeps the paper's order of the acceptance
+/// (schemes/collision_stage.hpp).
+inline bool has_enskog_shear_shift(const Scene& scene) noexcept {
+  return scene.shear_rate != 0.0 && scene.collision.packing_fraction > 0.0;
+}
+
 /// A one-line name of the instantiation chosen for the scene, e.g. "dsmc<hard-sphere>".
 std::string instantiation_name(const Scene& scene);
 

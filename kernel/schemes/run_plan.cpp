@@ -96,7 +96,7 @@ RunPlan plan_run(const Scene& scene, int threads) {
   if (scene.shear_rate != 0.0) {
     plan.effects.push_back("uniform shear flow: inertial force V_x -= a V_y dt in free flight (O(N) per step), "
                            "pressure tensor P^k at each sample");
-    plan.effects.push_back(scene.collision.packing_fraction > 0.0
+    plan.effects.push_back(has_enskog_shear_shift(scene)
                                ? "Enskog shear shift of the contact velocity, collisional transfer P^c tallied"
                                : "no shift of the contact velocity (Boltzmann limit, P^c = 0)");
   }
@@ -126,7 +126,7 @@ RunPlan plan_run(const Scene& scene, int threads) {
   const double u0 = std::sqrt(scene.initial_temperature);
   // The majorant bounds the mean of omega_kl over sigma-hat, a quarter of omega_kl's bound, except with the
   // Enskog shear shift (schemes/collision_stage.hpp, majorant_bound).
-  const double mean_form = scene.shear_rate != 0.0 && scene.collision.packing_fraction > 0.0 ? 1.0 : 0.25;
+  const double mean_form = has_enskog_shear_shift(scene) ? 1.0 : 0.25;
   for (const PairCoefficients& p : pair_coefficients(scene)) {
     const SpeciesConfig& a = scene.species[p.i];
     const SpeciesConfig& b = scene.species[p.j];
