@@ -63,7 +63,7 @@ int explain_command(const Scene& full_scene, const RunArgs& args) {
   if (!scene.intruder)
     std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
               static_cast<double>(plan.particle_bytes) / 1e6, plan.replicas_in_flight,
-              SpeciesStore::bytes_per_particle());
+              stored_bytes_per_particle(scene));
   if (scene.intruder) {
     std::printf("work         about %.3g collision events (one intruder per replica)\n", plan.events);
     return exit_ok;

@@ -37,7 +37,7 @@ struct KnownTable {
 
 const std::vector<KnownTable>& known_tables() {
   static const std::vector<KnownTable> tables = {
-      {"[run]", {"method", "seed", "replicas", "t_end", "dt", "samples", "dt_scaling", "sample_spacing"}},
+      {"[run]", {"method", "seed", "replicas", "t_end", "dt", "samples", "dt_scaling", "sample_spacing", "storage"}},
       {"[[species]]", {"name", "mass", "diameter", "density", "particles"}},
       {"[collision]", {"kernel", "lambda", "rate", "restitution", "packing_fraction"}},
       {"[thermostat]", {"kind", "zeta", "beta"}},
@@ -476,6 +476,8 @@ void Reader::read_run(const Section& s, RunConfig& run) const {
   run.sample_spacing =
       choice<SampleSpacing>(s, "sample_spacing", {{"linear", SampleSpacing::linear}, {"log", SampleSpacing::log}})
           .value_or(run.sample_spacing);
+  run.storage = choice<Storage>(s, "storage", {{"double", Storage::double_precision}, {"float", Storage::single_precision}})
+                    .value_or(run.storage);
 
   const auto dt = number(s, "dt", "a finite number >= 0");
   if (dt) run.dt = non_negative(s.key("dt"), *dt);

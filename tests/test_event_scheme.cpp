@@ -78,6 +78,12 @@ TEST(EventScheme, MaxwellHeatingIsExactExample3) {
   check_maxwell_relaxation(example(CollisionKernel::maxwell, 1.0, 64, 2000));
 }
 
+TEST(EventScheme, MaxwellHeatingIsExactWithFloatStorage) {  // run.storage = "float": 16-byte particles
+  Scene s = example(CollisionKernel::maxwell, 1.0, 64, 2000);
+  s.run.storage = Storage::single_precision;
+  check_maxwell_relaxation(s);
+}
+
 TEST(EventScheme, MaxwellCoolingIsExactExample4) {
   check_maxwell_relaxation(example(CollisionKernel::maxwell, 0.125, 64, 2000));
 }

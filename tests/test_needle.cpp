@@ -427,3 +427,11 @@ TEST(Needle, SceneRunReportsTheStationaryAverages) {
   EXPECT_EQ(n.newton_iterations, newton);
   EXPECT_EQ(n.bisection_fallbacks, bisection);
 }
+
+TEST(Needle, FloatStorageIsRefusedForAnIntruderScene) {
+  // run.storage is a gas-store option; an intruder scene has no store, so the key must not pass silently.
+  Scene s = needle_scene(0.5, 0.3, 10.0, 1);
+  s.run.storage = Storage::single_precision;
+  EXPECT_NE(unsupported_reason(s).find("run.storage = \"float\" for an intruder scene"), std::string::npos)
+      << unsupported_reason(s);
+}

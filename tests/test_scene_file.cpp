@@ -73,6 +73,7 @@ dt = 1e-3
 samples = 50
 dt_scaling = "thermal"
 sample_spacing = "log"
+storage = "float"
 
 [[species]]
 name = "big"
@@ -120,6 +121,7 @@ histogram = { shells = 64, radius = 8.5 }
   EXPECT_EQ(s.run.samples, 50);
   EXPECT_EQ(s.run.dt_scaling, DtScaling::thermal);
   EXPECT_EQ(s.run.sample_spacing, SampleSpacing::log);
+  EXPECT_EQ(s.run.storage, Storage::single_precision);
   ASSERT_EQ(s.species.size(), 2u);
   EXPECT_EQ(s.species[0].name, "big");
   EXPECT_EQ(s.species[0].mass, 2.5);
@@ -161,6 +163,7 @@ TEST(SceneFile, DefaultsAreApplied) {
   EXPECT_EQ(s.run.samples, 100);
   EXPECT_EQ(s.run.dt_scaling, DtScaling::fixed);
   EXPECT_EQ(s.run.sample_spacing, SampleSpacing::linear);
+  EXPECT_EQ(s.run.storage, Storage::double_precision);
   ASSERT_EQ(s.species.size(), 1u);
   EXPECT_EQ(s.species[0].name, "a");
   EXPECT_EQ(s.species[0].mass, 1.0);
@@ -295,7 +298,7 @@ TEST(SceneFile, LoadSceneReadsAFile) {
 TEST(SceneFile, UnknownKeyInRun) {
   expect_rejected("[run]\nt_end = 1.0\ndt = 0.01\nfrobnicate = 3\n" + kSpecies, "run.frobnicate",
                   "unknown key; allowed keys in [run]: method, seed, replicas, t_end, dt, samples, dt_scaling, "
-                  "sample_spacing");
+                  "sample_spacing, storage");
   expect_rejected("[run]\nt_end = 1.0\ndt = 0.01\ntend = 3\n" + kSpecies, "run.tend", "did you mean t_end?");
   expect_rejected("[run]\nt_end = 1.0\ndt = 0.01\nkernel = \"vhs\"\n" + kSpecies, "run.kernel",
                   "it belongs in [collision]");
@@ -495,6 +498,8 @@ TEST(SceneFile, UnknownChoiceStrings) {
                   "allowed: \"fixed\" | \"thermal\"");
   expect_rejected("[run]\nt_end = 1\ndt = 0.1\nsample_spacing = \"geometric\"\n" + kSpecies, "run.sample_spacing",
                   "allowed: \"linear\" | \"log\"");
+  expect_rejected("[run]\nt_end = 1\ndt = 0.1\nstorage = \"half\"\n" + kSpecies, "run.storage",
+                  "allowed: \"double\" | \"float\"");
   expect_rejected(kGas + "[thermostat]\nkind = \"gaussian\"\nzeta = \"auto\"\n", "thermostat.zeta",
                   "expected a finite number or \"cooling-rate\"");
 }

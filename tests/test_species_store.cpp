@@ -28,3 +28,34 @@ TEST(SpeciesStore, LargeBuffersAreHugePageAligned) {
   AlignedBuffer<double> small(10);
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(small.data()) % AlignedBuffer<double>::cache_line, 0u);
 }
+
+TEST(SpeciesStore, FloatRecordsAreSixteenBytesAndRoundToNearest) {
+  EXPECT_EQ(FloatSpeciesStore::bytes_per_particle(), 16u);
+  FloatSpeciesStore s(3);
+  s.set_velocity(1, {1.0 / 3.0, -2.0 / 3.0, 1e-30});
+  const Vec3 v = s.velocity(1);
+  EXPECT_EQ(v.x, static_cast<double>(1.0f / 3.0f));
+  EXPECT_EQ(v.y, static_cast<double>(-2.0f / 3.0f));
+  EXPECT_EQ(v.z, static_cast<double>(1e-30f));
+  EXPECT_NE(v.x, 1.0 / 3.0);  // rounded, not kept
+}
+
+TEST(SpeciesStore, FloatLastUpdateTimesKeepTheirResolutionAfterARestart) {
+  // At t = 10^6 a float time has a resolution of 0.06; relative to the last restart it keeps 2^-24 of
+  // the time since then. The event scheme restarts the clock at every full synchronisation.
+  FloatSpeciesStore s(2);
+  const double t0 = 1e6;
+  s.set_last_update(0, t0);
+  s.set_last_update(1, t0);
+  s.restart_clock(t0);
+  EXPECT_EQ(s.last_update(0), t0);
+  const double step = 1e-3;
+  s.set_last_update(1, t0 + step);
+  EXPECT_NEAR(s.last_update(1) - t0, step, step * 0x1p-23);
+  EXPECT_EQ(s.last_update(0), t0);
+  SpeciesStore d(1);  // double: restart_clock changes nothing
+  d.set_last_update(0, t0 + step);
+  d.restart_clock(t0 + step);
+  EXPECT_EQ(d.last_update(0), t0 + step);
+}
+

@@ -20,6 +20,8 @@ enum class BathKind { gaussian, power_law };
 enum class DtScaling { fixed, thermal };
 /// Where the observations fall: t_k = k t_end / samples, or geometrically from dt to t_end.
 enum class SampleSpacing { linear, log };
+/// The scalar of the stored particle velocities (docs/scenes.md, run.storage; core/species_store.hpp).
+enum class Storage { double_precision, single_precision };
 
 /// The scene-file spelling of a method ("dsmc", "event", "gillespie").
 constexpr const char* method_name(Method m) noexcept {
@@ -43,6 +45,7 @@ struct RunConfig {
   int samples = 100;            // > 0; observations at samples + 1 times including t = 0
   DtScaling dt_scaling = DtScaling::fixed;
   SampleSpacing sample_spacing = SampleSpacing::linear;
+  Storage storage = Storage::double_precision;
 };
 
 struct SpeciesConfig {

@@ -9,15 +9,24 @@
 // docs/performance.md the figures). The fourth slot `aux`
 // is reserved for the lazy-update time t_j of the event scheme (001 sec. 4), so that scheme also stays
 // within 32 bytes per particle.
+//
+// The scalar of the record is the scene's storage precision (run.storage, docs/scenes.md): double, or
+// float for half the memory (16-byte records). The physics always computes in double: a velocity is
+// converted when loaded and rounded when stored. A float last-update time is kept relative to the time of
+// the last full synchronisation (restart_clock), so its resolution is that of the time since then, not
+// that of the run's whole span.
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "kernel/core/aligned_buffer.hpp"
 #include "kernel/core/vec3.hpp"
 
 namespace granmc {
 
-class SpeciesStore {
+template <class Real>
+class BasicSpeciesStore {
+  static_assert(std::is_same_v<Real, double> || std::is_same_v<Real, float>);
   struct Record;
 
  public:
@@ -27,21 +36,17 @@ class SpeciesStore {
   class Particle {
    public:
     [[nodiscard]] Vec3 velocity() const noexcept { return {r_->v[0], r_->v[1], r_->v[2]}; }
-    void set_velocity(const Vec3& v) const noexcept {
-      r_->v[0] = v.x;
-      r_->v[1] = v.y;
-      r_->v[2] = v.z;
-    }
+    void set_velocity(const Vec3& v) const noexcept { store(*r_, v); }
     /// Hint that the particle will be read and written soon (random pairs are memory-latency bound).
     void prefetch() const noexcept { __builtin_prefetch(r_, 1, 3); }
 
    private:
-    friend class SpeciesStore;
+    friend class BasicSpeciesStore;
     Record* r_ = nullptr;
   };
 
-  SpeciesStore() = default;
-  explicit SpeciesStore(std::size_t particles) : records_(particles) {}
+  BasicSpeciesStore() = default;
+  explicit BasicSpeciesStore(std::size_t particles) : records_(particles) {}
 
   [[nodiscard]] std::size_t size() const noexcept { return records_.size(); }
 
@@ -49,15 +54,18 @@ class SpeciesStore {
     const Record& r = records_[k];
     return {r.v[0], r.v[1], r.v[2]};
   }
-  void set_velocity(std::size_t k, const Vec3& v) noexcept {
-    Record& r = records_[k];
-    r.v[0] = v.x;
-    r.v[1] = v.y;
-    r.v[2] = v.z;
-  }
+  void set_velocity(std::size_t k, const Vec3& v) noexcept { store(records_[k], v); }
   /// The time of particle k's last lazy update (event scheme, 001 sec. 4: particles are (v_j, t_j)).
-  [[nodiscard]] double last_update(std::size_t k) const noexcept { return records_[k].aux; }
-  void set_last_update(std::size_t k, double t) noexcept { records_[k].aux = t; }
+  [[nodiscard]] double last_update(std::size_t k) const noexcept { return clock_origin_ + records_[k].aux; }
+  void set_last_update(std::size_t k, double t) noexcept { records_[k].aux = static_cast<Real>(t - clock_origin_); }
+  /// Declares that every particle's last update is t (all were just brought to t): float times restart
+  /// from t, so they keep their resolution over long runs. Double times are already exact: nothing to do.
+  void restart_clock(double t) noexcept {
+    if constexpr (std::is_same_v<Real, float>) {
+      clock_origin_ = t;
+      for (std::size_t k = 0; k < records_.size(); ++k) records_[k].aux = 0.0f;
+    }
+  }
 
   [[nodiscard]] Particle particle(std::size_t k) noexcept {
     Particle p;
@@ -87,12 +95,24 @@ class SpeciesStore {
   static constexpr std::size_t bytes_per_particle() noexcept { return sizeof(Record); }
 
  private:
-  struct alignas(32) Record {
-    double v[3];
-    double aux;
+  struct alignas(4 * sizeof(Real)) Record {
+    Real v[3];
+    Real aux;
   };
-  static_assert(sizeof(Record) == 32);
+  static_assert(sizeof(Record) == 4 * sizeof(Real));
+  /// Rounds to the storage precision (to nearest; no rounding for double).
+  static void store(Record& r, const Vec3& v) noexcept {
+    r.v[0] = static_cast<Real>(v.x);
+    r.v[1] = static_cast<Real>(v.y);
+    r.v[2] = static_cast<Real>(v.z);
+  }
   AlignedBuffer<Record> records_;
+  double clock_origin_ = 0.0;  // last_update(k) = clock_origin_ + aux (0 for double)
 };
+
+/// The default store: double precision, 32 bytes per particle.
+using SpeciesStore = BasicSpeciesStore<double>;
+/// Half the memory: float records of 16 bytes (run.storage = "float").
+using FloatSpeciesStore = BasicSpeciesStore<float>;
 
 }  // namespace granmc

@@ -30,11 +30,12 @@ struct BgkRelaxation {
   double mass = 1.0;
 
   /// Returns the change of sum_k m |c_k|^2 (stored units).
-  double apply(GasState& state, const StepContext& step) const noexcept {
+  template <class State>
+  double apply(State& state, const StepContext& step) const noexcept {
     const double zeta_dt = std::log1p(step.twice_energy_loss / step.twice_energy);
     const double log_keep = -0.5 * zeta_dt;  // ln(1 - p), p = 1 - exp(-zeta dt / 2)
     if (!(log_keep < 0.0)) return 0.0;
-    SpeciesStore& store = state.species[0];
+    auto& store = state.species[0];
     const double n = static_cast<double>(store.size());
     const double v0 = std::sqrt(2.0 * step.twice_energy / (3.0 * n * mass));  // sqrt(2 T / m), T = m <c^2> / 3
     std::uint64_t block = 0;

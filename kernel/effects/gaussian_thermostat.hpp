@@ -20,7 +20,8 @@ struct GaussianThermostat {
   double zeta = 0.0;               // fixed rate (1 / time) when not compensating
 
   /// Moves only the velocity scale: the stored energy is unchanged (returns 0).
-  double apply(GasState& state, const StepContext& step) const noexcept {
+  template <class State>
+  double apply(State& state, const StepContext& step) const noexcept {
     if (compensate_cooling) {
       state.scale.log_u += 0.5 * std::log1p(step.twice_energy_loss / step.twice_energy);  // u^2 T stays
     } else {

@@ -23,7 +23,8 @@ struct LagrangianShear {
 
   /// Returns the change of sum_i m_i sum_k |c_k|^2 (stored units): the viscous heating of the kinetic
   /// part, -2 a dt sum m c_x c_y + (a dt)^2 sum m c_y^2.
-  double apply(GasState& state, const StepContext& step) const noexcept {
+  template <class State>
+  double apply(State& state, const StepContext& step) const noexcept {
     const double a_dt = rate * step.dt;
     CompensatedSum change;
     for (std::size_t i = 0; i < state.species.size(); ++i) {

@@ -4,7 +4,8 @@
 //   struct MyEffect {
 //     static constexpr StepPhase phase = StepPhase::...;   // when in the step it acts
 //     Params ...;                                          // its parameters, from the scene
-//     double apply(GasState& state, const StepContext& step) noexcept;
+//     template <class State>  // GasState or FloatGasState (gas_state.hpp)
+//     double apply(State& state, const StepContext& step) noexcept;
 //   };
 //
 // apply returns the change it made to sum_i m_i sum_k |c_k|^2 in stored units (0 for an effect that only

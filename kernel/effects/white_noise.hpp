@@ -27,11 +27,12 @@ struct WhiteNoise {
   static constexpr std::size_t batch = 16;  // particles whose normals are computed together
 
   /// Returns the change of sum_i m_i sum_k |c_k|^2 (stored units).
-  double apply(GasState& state, const StepContext& step) const noexcept {
+  template <class State>
+  double apply(State& state, const StepContext& step) const noexcept {
     const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
     CompensatedSum change;
     for (std::size_t i = 0; i < state.species.size(); ++i) {
-      SpeciesStore& store = state.species[i];
+      auto& store = state.species[i];
       const double mass = scene->species[i].mass;
       for (std::size_t first = 0; first < store.size(); first += batch) {
         const ParticleNormals<batch> xi(*step.rng, RngPurpose::white_noise_kick, static_cast<std::uint16_t>(i),

@@ -7,9 +7,10 @@
 
 namespace granmc {
 
-std::vector<SpeciesMoments> gas_moments(const GasState& state, const Vec3& centre) {
+template <class Real>
+std::vector<SpeciesMoments> gas_moments(const BasicGasState<Real>& state, const Vec3& centre) {
   std::vector<SpeciesMoments> m;
-  for (const SpeciesStore& s : state.species) m.push_back(species_moments(s, centre));
+  for (const BasicSpeciesStore<Real>& s : state.species) m.push_back(species_moments(s, centre));
   return m;
 }
 
@@ -24,7 +25,8 @@ GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& mome
   return t;
 }
 
-GasTotals observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram) {
+template <class Real>
+GasTotals observe_gas(const Scene& scene, const BasicGasState<Real>& state, ReplicaSeries& series, bool histogram) {
   const double n = total_density(scene);
   // Temperatures and cumulants are of the peculiar velocity, about the mixture's flow velocity: zero to
   // rounding where collisions conserve momentum, but not under white noise (001 eq. 13, Remark 1).
@@ -58,5 +60,10 @@ GasTotals observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& 
   series.momentum_relative.push_back(norm(totals.momentum) / std::sqrt(totals.mass * totals.twice_energy));
   return totals;
 }
+
+template std::vector<SpeciesMoments> gas_moments(const GasState&, const Vec3&);
+template std::vector<SpeciesMoments> gas_moments(const FloatGasState&, const Vec3&);
+template GasTotals observe_gas(const Scene&, const GasState&, ReplicaSeries&, bool);
+template GasTotals observe_gas(const Scene&, const FloatGasState&, ReplicaSeries&, bool);
 
 }  // namespace granmc

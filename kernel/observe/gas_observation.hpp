@@ -10,7 +10,8 @@
 namespace granmc {
 
 /// The moments of every species of `state` about `centre` (stored units), in species order.
-std::vector<SpeciesMoments> gas_moments(const GasState& state, const Vec3& centre = {});
+template <class Real>
+std::vector<SpeciesMoments> gas_moments(const BasicGasState<Real>& state, const Vec3& centre = {});
 
 /// Mass-weighted sums over all species in stored units, used to observe and to rescale.
 struct GasTotals {
@@ -24,6 +25,7 @@ GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& mome
 /// Appends one observation of `state` to `series` (series.species must have one entry per species); with
 /// `histogram`, also adds the scaled speeds to each species' speed_counts. Returns the totals it summed
 /// (stored units), for checks the caller makes on the same state.
-GasTotals observe_gas(const Scene& scene, const GasState& state, ReplicaSeries& series, bool histogram);
+template <class Real>
+GasTotals observe_gas(const Scene& scene, const BasicGasState<Real>& state, ReplicaSeries& series, bool histogram);
 
 }  // namespace granmc

@@ -4,7 +4,8 @@
 
 namespace granmc {
 
-SpeciesMoments species_moments(const SpeciesStore& store, const Vec3& centre) noexcept {
+template <class Real>
+SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre) noexcept {
   CompensatedSum s2, s4, s6, px, py, pz;
   store.for_each_velocity([&](const Vec3& c) {
     const double c2 = norm2(c - centre);
@@ -23,5 +24,8 @@ SpeciesMoments species_moments(const SpeciesStore& store, const Vec3& centre) no
   m.sum_c = {px.value(), py.value(), pz.value()};
   return m;
 }
+
+template SpeciesMoments species_moments(const SpeciesStore&, const Vec3&) noexcept;
+template SpeciesMoments species_moments(const FloatSpeciesStore&, const Vec3&) noexcept;
 
 }  // namespace granmc

@@ -30,6 +30,8 @@ struct SpeciesMoments {
   }
 };
 
-SpeciesMoments species_moments(const SpeciesStore& store, const Vec3& centre = {}) noexcept;
+/// (Instantiated for both storage precisions, SpeciesStore and FloatSpeciesStore.)
+template <class Real>
+SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre = {}) noexcept;
 
 }  // namespace granmc

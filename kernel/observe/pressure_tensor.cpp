@@ -8,7 +8,8 @@
 
 namespace granmc {
 
-SymTensor reduced_kinetic_pressure(const Scene& scene, const GasState& state) {
+template <class Real>
+SymTensor reduced_kinetic_pressure(const Scene& scene, const BasicGasState<Real>& state) {
   // About the flow velocity (zero to rounding: collisions and the shear map conserve momentum).
   const GasTotals totals = gas_totals(scene, gas_moments(state));
   const Vec3 flow = (1.0 / totals.mass) * totals.momentum;
@@ -28,6 +29,9 @@ SymTensor reduced_kinetic_pressure(const Scene& scene, const GasState& state) {
   const SymTensor sum{xx.value(), yy.value(), zz.value(), xy.value(), xz.value(), yz.value()};
   return (3.0 / sum.trace()) * sum;
 }
+
+template SymTensor reduced_kinetic_pressure(const Scene&, const GasState&);
+template SymTensor reduced_kinetic_pressure(const Scene&, const FloatGasState&);
 
 double thermal_speed(const Scene& scene, double temperature) {
   const double m1 = scene.species.front().mass;

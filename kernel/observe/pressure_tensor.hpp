@@ -13,7 +13,8 @@
 namespace granmc {
 
 /// P^k / (n T) of `state` (000 eq. 17).
-SymTensor reduced_kinetic_pressure(const Scene& scene, const GasState& state);
+template <class Real>
+SymTensor reduced_kinetic_pressure(const Scene& scene, const BasicGasState<Real>& state);
 
 /// The thermal speed v_0 = sqrt(2 T / m) of one species, or sqrt(2 T (m_1 + m_2) / (m_1 m_2)) of a binary
 /// mixture (000 sec. 4, with Garzo and Montanero's convention), at mixture temperature T.

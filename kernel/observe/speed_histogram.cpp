@@ -18,12 +18,16 @@ double histogram_speed_unit(const Scene& scene, const VelocityScale& scale, doub
   return scaled_speed_unit(scene, theta_mixture);
 }
 
-void add_speeds(const SpeciesStore& store, double unit, double radius, std::vector<double>& counts) noexcept {
+template <class Real>
+void add_speeds(const BasicSpeciesStore<Real>& store, double unit, double radius, std::vector<double>& counts) noexcept {
   const double per_shell = static_cast<double>(counts.size()) / (radius * unit);
   store.for_each_velocity([&](const Vec3& c) {
     const double shell = norm(c) * per_shell;
     if (shell < static_cast<double>(counts.size())) counts[static_cast<std::size_t>(shell)] += 1.0;
   });
 }
+
+template void add_speeds(const SpeciesStore&, double, double, std::vector<double>&) noexcept;
+template void add_speeds(const FloatSpeciesStore&, double, double, std::vector<double>&) noexcept;
 
 }  // namespace granmc

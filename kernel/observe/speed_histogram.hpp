@@ -21,6 +21,7 @@ double histogram_speed_unit(const Scene& scene, const VelocityScale& scale, doub
 
 /// Adds the stored speeds of one species, divided by `unit`, to `counts` (shells of width radius/shells
 /// from 0; speeds at or beyond the radius are not counted).
-void add_speeds(const SpeciesStore& store, double unit, double radius, std::vector<double>& counts) noexcept;
+template <class Real>
+void add_speeds(const BasicSpeciesStore<Real>& store, double unit, double radius, std::vector<double>& counts) noexcept;
 
 }  // namespace granmc

@@ -70,8 +70,8 @@ namespace detail {
 /// The stage with the number of ordered pairs known at compile time when it is one (`one_pair`): then the
 /// pair's constants, majorant and tally live in locals (registers) and no candidate looks them up. The
 /// arithmetic and its order are the same in both forms, so the results are the same bits.
-template <class Kernel, class Shift, bool one_pair, std::uint64_t batch>
-void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
+template <class Kernel, class Shift, bool one_pair, std::uint64_t batch, class Real>
+void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                      std::span<const std::uint64_t> candidates, const RandomStream& rng,
                      std::span<CollisionTally> tallies, const Kernel& kernel, const Shift& shift) noexcept {
   static_assert(batch > 0);
@@ -102,8 +102,9 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
   // species). Each candidate then finds its two particles as it is drawn, and the collision loop reads
   // them without going through the pair and the store again (for a mixture that chain of loads stood in
   // front of every velocity load: docs/performance.md, effects).
-  SpeciesStore* store_k[max_pairs];
-  SpeciesStore* store_l[max_pairs];
+  using Store = BasicSpeciesStore<Real>;
+  Store* store_k[max_pairs];
+  Store* store_l[max_pairs];
   std::uint64_t range_k[max_pairs], range_l[max_pairs];
   bool same_species[max_pairs];
   for (std::size_t q = 0; q < n_pairs; ++q) {
@@ -113,7 +114,7 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
     range_k[q] = store_k[q]->size();
     range_l[q] = same_species[q] ? range_k[q] - 1 : store_l[q]->size();
   }
-  SpeciesStore::Particle pk[batch], pl[batch];
+  typename Store::Particle pk[batch], pl[batch];
   std::uint8_t qs[batch];
   std::uint32_t accept_word[batch];
   std::array<double, batch> dir1{}, dir2{}, sx, sy, sz;  // initialised: a last, partial batch converts all lanes
@@ -224,8 +225,8 @@ void collide_batches(GasState& state, std::span<const PairCoefficients> pairs, s
 /// candidates of a batch that share a particle therefore still act in sequence, and the result is the
 /// same for every batch size (tests/test_collision_stage.cpp); the batch only lets the memory loads of
 /// different candidates overlap (perf/bench_collisions.cpp: 1.4x at N = 10^5, 3x at N = 10^7).
-template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift>
-void collide_step(GasState& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
+template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift, class Real = double>
+void collide_step(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                   std::span<const std::uint64_t> candidates, const RandomStream& rng,
                   std::span<CollisionTally> tallies, const Kernel& kernel = {}, const Shift& shift = {}) noexcept {
   if (pairs.size() == 1)

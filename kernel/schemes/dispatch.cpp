@@ -37,7 +37,7 @@ constexpr const char* supported_list =
     "form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or \"white-noise\", "
     "packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of dimension 1 in "
     "a \"gaussian\" or \"power-law\" bath, or of dimension 2 (the needle) in a \"gaussian\" bath; method = "
-    "\"dsmc\" with an [intruder] of dimension 1 (002 sec. 4)";
+    "\"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for every gas scene";
 
 /// Why granmc cannot run an event-scheme scene, or empty.
 std::string unsupported_event(const Scene& scene) {
@@ -52,13 +52,18 @@ std::string unsupported_event(const Scene& scene) {
 }
 
 /// The time-stepped scheme with the kernel K, the effects `before` (shear) and the thermostat the scene
-/// names (none is an empty pack); `white_noise` says whether that instantiation exists.
+/// names (none is an empty pack), in the scene's storage precision; `white_noise` says whether that
+/// instantiation exists.
 template <class K, bool white_noise, class... Before>
 RunResult run_dsmc(const Scene& scene, const RunOptions& options, Before... before) {
   auto run = [&](auto... effects) {
-    return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-      return run_dsmc_replica<K>(scene, replica, times, options, before..., effects...);
-    });
+    auto in = [&](auto real) {
+      using Real = decltype(real);
+      return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+        return run_dsmc_replica<Real, K>(scene, replica, times, options, before..., effects...);
+      });
+    };
+    return scene.run.storage == Storage::single_precision ? in(float{}) : in(double{});
   };
   const ThermostatConfig& th = scene.thermostat;
   if (th.kind == ThermostatKind::gaussian && scene.relaxation)  // 003: thermostat, then the relaxation term
@@ -81,11 +86,18 @@ RunResult run_dsmc_hard_spheres(const Scene& scene, const RunOptions& options) {
   return run_dsmc<HardSphere, false>(scene, options, shear);
 }
 
+/// The instantiation name's note on the storage precision (none for the default, double).
+std::string storage_name(const Scene& scene) {
+  return scene.run.storage == Storage::single_precision ? ", float storage (16 bytes per particle)" : "";
+}
+
 }  // namespace
 
 std::string unsupported_reason(const Scene& scene) {
   std::string what;
-  if (scene.run.method == Method::gillespie) {
+  if (scene.intruder && scene.run.storage != Storage::double_precision) {
+    what = "run.storage = \"float\" for an intruder scene (it stores no gas)";
+  } else if (scene.run.method == Method::gillespie) {
     if (scene.intruder->dimension == 2 && scene.intruder->bath != BathKind::gaussian)
       what = "the 2D needle in a \"power-law\" bath";
   } else if (scene.run.method == Method::event) what = unsupported_event(scene);
@@ -117,7 +129,8 @@ std::string instantiation_name(const Scene& scene) {
     const char* kernel = scene.collision.lambda == 0.0 ? MaxwellKernel::name
                          : scene.collision.lambda == 1.0 ? IsotropicHardSphereKernel::name
                                                          : VhsKernel::name;
-    return std::string("event<") + kernel + (scene.thermostat.kind == ThermostatKind::white_noise ? ", white-noise>" : ">");
+    return std::string("event<") + kernel + (scene.thermostat.kind == ThermostatKind::white_noise ? ", white-noise>" : ">") +
+           storage_name(scene);
   }
   std::string name = std::string("dsmc<") +
                      (scene.collision.kernel == CollisionKernel::maxwell ? MaxwellPseudomolecules::name
@@ -130,7 +143,7 @@ std::string instantiation_name(const Scene& scene) {
   if (scene.thermostat.kind == ThermostatKind::white_noise) name += ", white-noise";
   name += ">";
   if (scene.collision.packing_fraction > 0.0) name += ", Enskog chi in the pair rates";
-  return name;
+  return name + storage_name(scene);
 }
 
 RunResult run_scene(const Scene& scene, const RunOptions& options) {
@@ -161,9 +174,12 @@ RunResult run_scene(const Scene& scene, const RunOptions& options) {
   }
   if (scene.run.method == Method::event) {
     auto run = [&](auto kernel) {
-      return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-        return run_event_replica(scene, replica, times, options, kernel);
-      });
+      auto in = [&](auto real) {
+        return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+          return run_event_replica<decltype(real)>(scene, replica, times, options, kernel);
+        });
+      };
+      return scene.run.storage == Storage::single_precision ? in(float{}) : in(double{});
     };
     if (scene.collision.lambda == 0.0) return run(MaxwellKernel{});
     if (scene.collision.lambda == 1.0) return run(IsotropicHardSphereKernel{});

@@ -49,8 +49,9 @@ struct collision_shift<First, Rest...> {
 };
 }  // namespace detail
 
-template <class Kernel, class... Effects>
-class Dsmc {
+/// Real is the storage precision of the velocities (run.storage; core/species_store.hpp).
+template <class Real, class Kernel, class... Effects>
+class BasicDsmc {
   using Shift = typename detail::collision_shift<Effects...>::type;
 
  public:
@@ -60,13 +61,13 @@ class Dsmc {
   /// Stored energy may drift by this factor before the velocities are rescaled.
   static constexpr double rescale_factor = 1.25;
 
-  Dsmc(const Scene& scene, std::uint64_t replica, Effects... effects)
+  BasicDsmc(const Scene& scene, std::uint64_t replica, Effects... effects)
       : scene_(scene),
         rng_(scene.run.seed, replica),
         kernel_(Kernel::from_scene(scene)),
         pairs_(pair_coefficients(scene)),
         effects_(effects...),
-        state_(maxwellian_state(scene, rng_)) {
+        state_(maxwellian_state<Real>(scene, rng_)) {
     for (const SpeciesConfig& s : scene.species) total_particles_ += static_cast<double>(s.particles);
     rescale();  // unit stored temperature from the start; not counted as a rescaling during the run
     rescales_ = 0;
@@ -76,7 +77,7 @@ class Dsmc {
     // on omega_kl at t = 0, or a quarter of it, a bound on its mean over sigma-hat, in the form of the
     // acceptance the collision stage uses (majorant_bound); afterwards it grows when exceeded (000 sec. 3).
     std::vector<double> max_speed;
-    for (const SpeciesStore& s : state_.species) {
+    for (const BasicSpeciesStore<Real>& s : state_.species) {
       double m = 0.0;
       s.for_each_velocity([&](const Vec3& c) { m = std::max(m, norm2(c)); });
       max_speed.push_back(std::sqrt(m));
@@ -90,7 +91,7 @@ class Dsmc {
     }
   }
 
-  [[nodiscard]] const GasState& state() const noexcept { return state_; }
+  [[nodiscard]] const BasicGasState<Real>& state() const noexcept { return state_; }
   [[nodiscard]] const CollisionTally& tally() const noexcept { return total_; }
   /// Totals per ordered species pair, in the order of pair_coefficients(scene).
   [[nodiscard]] const std::vector<CollisionTally>& pair_tallies() const noexcept { return pair_totals_; }
@@ -238,7 +239,7 @@ class Dsmc {
     momentum_removed_ += norm(t.momentum) / std::sqrt(t.mass * t.twice_energy);
     const double twice_energy = t.twice_energy - norm2(t.momentum) / t.mass;  // after removing v_cm
     const double s = std::sqrt(3.0 * total_particles_ / twice_energy);
-    for (SpeciesStore& store : state_.species) store.for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
+    for (BasicSpeciesStore<Real>& store : state_.species) store.for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
     state_.scale.log_u -= std::log(s);
     twice_energy_ = reference_twice_energy_ = 3.0 * total_particles_;
     ++rescales_;
@@ -249,7 +250,7 @@ class Dsmc {
   Kernel kernel_;
   std::vector<PairCoefficients> pairs_;
   std::tuple<Effects...> effects_;
-  GasState state_;
+  BasicGasState<Real> state_;
   std::vector<double> omega_max_;  // per ordered pair, units of u
   std::vector<double> carried_;    // fractional candidates carried to the next step
   std::vector<std::uint64_t> candidates_;  // this step's candidates per pair
@@ -266,5 +267,9 @@ class Dsmc {
   double transfer_since_ = 0.0;
   double owed_ = 0.0;  // the half step the around_collisions effects owe since the last step (scene time)
 };
+
+/// Double storage, the default.
+template <class Kernel, class... Effects>
+using Dsmc = BasicDsmc<double, Kernel, Effects...>;
 
 }  // namespace granmc

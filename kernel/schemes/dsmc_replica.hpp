@@ -12,10 +12,10 @@
 
 namespace granmc {
 
-template <class Kernel, class... Effects>
+template <class Real, class Kernel, class... Effects>
 ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
                                const RunOptions& options, Effects... effects) {
-  Dsmc<Kernel, Effects...> sim(scene, replica, effects...);
+  BasicDsmc<Real, Kernel, Effects...> sim(scene, replica, effects...);
   const std::vector<double> initial_majorant = sim.omega_max();
   ReplicaSeries series;
   series.species.resize(scene.species.size());
@@ -24,7 +24,7 @@ ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const 
     const GasTotals summed = observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
     series.energy_residual = std::max(series.energy_residual.value_or(0.0),
                                       std::abs(sim.tracked_twice_energy() / summed.twice_energy - 1.0));
-    if constexpr (Dsmc<Kernel, Effects...>::sheared) {
+    if constexpr (BasicDsmc<Real, Kernel, Effects...>::sheared) {
       series.pressure_kinetic.push_back(reduced_kinetic_pressure(scene, sim.state()));
       series.pressure_collisional.push_back(sim.take_collisional_pressure());
       series.reduced_shear_rate.push_back(scene.shear_rate /

@@ -10,10 +10,10 @@
 
 namespace granmc {
 
-template <class Kernel>
+template <class Real, class Kernel>
 ReplicaSeries run_event_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
                                 const RunOptions& options, Kernel kernel) {
-  EventWhiteNoise<Kernel> sim(scene, replica, kernel);
+  BasicEventWhiteNoise<Real, Kernel> sim(scene, replica, kernel);
   ReplicaSeries series;
   series.species.resize(1);
   for (std::size_t k = 0; k < times.size(); ++k) {

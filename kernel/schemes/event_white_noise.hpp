@@ -47,15 +47,20 @@ struct EventTally {
   std::uint64_t majorant_violations = 0; // candidates with |v_i - v_j| above the U_max they were drawn with
 };
 
-template <class Kernel>
-class EventWhiteNoise {
+/// Real is the storage precision of the particles (run.storage; core/species_store.hpp).
+template <class Real, class Kernel>
+class BasicEventWhiteNoise {
+  using Store = BasicSpeciesStore<Real>;
+  using State = BasicGasState<Real>;
+
  public:
   /// From the scene's initial Maxwellian.
-  EventWhiteNoise(const Scene& scene, std::uint64_t replica, Kernel kernel)
-      : EventWhiteNoise(scene, replica, kernel, maxwellian_state(scene, RandomStream(scene.run.seed, replica))) {}
+  BasicEventWhiteNoise(const Scene& scene, std::uint64_t replica, Kernel kernel)
+      : BasicEventWhiteNoise(scene, replica, kernel,
+                             maxwellian_state<Real>(scene, RandomStream(scene.run.seed, replica))) {}
 
   /// From a given initial state (one species, all last-update times 0, state.time = 0).
-  EventWhiteNoise(const Scene& scene, std::uint64_t replica, Kernel kernel, GasState initial)
+  BasicEventWhiteNoise(const Scene& scene, std::uint64_t replica, Kernel kernel, State initial)
       : kernel_(kernel),
         rng_(scene.run.seed, replica),
         state_(std::move(initial)),
@@ -73,14 +78,14 @@ class EventWhiteNoise {
     prepare(batches_[1], batch_size);
   }
 
-  [[nodiscard]] const GasState& state() const noexcept { return state_; }
+  [[nodiscard]] const State& state() const noexcept { return state_; }
   [[nodiscard]] const EventTally& tally() const noexcept { return tally_; }
   /// Current majorant U_max in scene velocity units.
   [[nodiscard]] double majorant() const noexcept { return majorant_ * state_.scale.u(); }
 
   /// Processes every candidate before t, then brings all particles to t (001 Remark 2 and step 3).
   void advance_to(double t) {
-    SpeciesStore& store = state_.species[0];
+    Store& store = state_.species[0];
     for (;;) {
       const DrawBatch& batch = batches_[current_];
       const double next = state_.time + batch.wait[slot_] / candidate_rate_;  // 001 step 2.1
@@ -121,7 +126,7 @@ class EventWhiteNoise {
   };
 
   void prepare(DrawBatch& batch, std::uint64_t first) const noexcept {
-    const SpeciesStore& store = state_.species[0];
+    const Store& store = state_.species[0];
     std::array<double, batch_size> e1, e2;
     std::array<double, 3 * batch_size> u1, u2;
     // Blocks 0 and 1 of draw first + k are lanes 2k and 2k + 1 (blocks 2 and 3 likewise in `normals`).
@@ -181,7 +186,7 @@ class EventWhiteNoise {
   }
 
   /// 001 eq. (23) for particle k up to time t with the standard normal vector xi: v += sqrt(2 beta s) xi.
-  void brownian_update(SpeciesStore& store, std::size_t k, double t, const Vec3& xi) const noexcept {
+  void brownian_update(Store& store, std::size_t k, double t, const Vec3& xi) const noexcept {
     const double s = t - store.last_update(k);
     store.set_last_update(k, t);
     if (s > 0.0) store.set_velocity(k, store.velocity(k) + std::sqrt(noise_ * s) * xi);
@@ -190,16 +195,17 @@ class EventWhiteNoise {
   /// Every particle to time t (001 Remark 2 and step 3). Particle k's three normals come from the block
   /// (brownian_sync, syncs_, k): two Box-Muller pairs, one value unused; computed batch_size particles at
   /// a time (the last batch computes normals past the end and drops them).
-  void bring_all_to(SpeciesStore& store, double t) const noexcept {
+  void bring_all_to(Store& store, double t) const noexcept {
     for (std::size_t first = 0; first < particles_; first += batch_size) {
       const ParticleNormals<batch_size> xi(rng_, RngPurpose::brownian_sync, 0, syncs_, first);
       const std::size_t count = std::min(batch_size, particles_ - first);
       for (std::size_t k = 0; k < count; ++k) brownian_update(store, first + k, t, xi[k]);
     }
+    store.restart_clock(t);
   }
 
   /// One candidate at state_.time: 001 steps 2.5-2.10, with slot k of the batch.
-  void candidate(SpeciesStore& store, const DrawBatch& batch, std::size_t k) {
+  void candidate(Store& store, const DrawBatch& batch, std::size_t k) {
     const std::size_t i = batch.i[k], j = batch.j[k];
     const double t = state_.time;
     if (noise_ != 0.0) {  // steps 2.5-2.6
@@ -221,7 +227,8 @@ class EventWhiteNoise {
     store.set_velocity(i, vi);
     store.set_velocity(j, vj);
     ++tally_.collisions;
-    if constexpr (!Kernel::constant_rate) raise_majorant(vi, vj);            // step 2.10
+    // step 2.10, on the velocities as stored (rounded, with float storage), which later candidates read
+    if constexpr (!Kernel::constant_rate) raise_majorant(store.velocity(i), store.velocity(j));
   }
 
   void raise_majorant(const Vec3& vi, const Vec3& vj) noexcept {
@@ -235,7 +242,7 @@ class EventWhiteNoise {
   /// V := bulk velocity, U_max := 2 max_j |v_j - V| (001 steps 1.3-1.4), with every particle current.
   void reset_majorant() noexcept {
     if constexpr (Kernel::constant_rate) return;
-    const SpeciesStore& store = state_.species[0];
+    const Store& store = state_.species[0];
     Vec3 sum;
     store.for_each_velocity([&](const Vec3& c) { sum += c; });
     reference_ = (1.0 / static_cast<double>(particles_)) * sum;
@@ -246,7 +253,7 @@ class EventWhiteNoise {
 
   Kernel kernel_;
   RandomStream rng_;
-  GasState state_;
+  State state_;
   double alpha_;
   std::size_t particles_;
   double noise_ = 0.0;           // 2 beta / u^2
@@ -261,5 +268,9 @@ class EventWhiteNoise {
   std::size_t slot_ = 0;
   EventTally tally_;
 };
+
+/// Double storage, the default.
+template <class Kernel>
+using EventWhiteNoise = BasicEventWhiteNoise<double, Kernel>;
 
 }  // namespace granmc

@@ -7,12 +7,13 @@
 
 namespace granmc {
 
-GasState maxwellian_state(const Scene& scene, const RandomStream& rng) {
-  GasState state;
+template <class Real>
+BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng) {
+  BasicGasState<Real> state;
   state.scale.log_u = 0.5 * std::log(scene.initial_temperature);
   for (std::size_t i = 0; i < scene.species.size(); ++i) {
     const SpeciesConfig& sp = scene.species[i];
-    SpeciesStore store(static_cast<std::size_t>(sp.particles));
+    BasicSpeciesStore<Real> store(static_cast<std::size_t>(sp.particles));
     const double width = 1.0 / std::sqrt(sp.mass);  // stored units: <c_x^2> = T(0) / (m u^2) = 1 / m
     for (std::size_t k = 0; k < store.size(); ++k) {
       const RandomBlock r = rng.block(RngPurpose::initial_velocity, static_cast<std::uint16_t>(i), 0, k);
@@ -28,5 +29,8 @@ GasState maxwellian_state(const Scene& scene, const RandomStream& rng) {
   }
   return state;
 }
+
+template GasState maxwellian_state(const Scene&, const RandomStream&);
+template FloatGasState maxwellian_state(const Scene&, const RandomStream&);
 
 }  // namespace granmc

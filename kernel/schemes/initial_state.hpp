@@ -10,6 +10,8 @@ namespace granmc {
 /// Maxwellian velocities at the scene's initial temperature for every species (000 eq. 13), then each
 /// species' mean velocity subtracted so the total momentum vanishes (000 sec. 3). The velocity scale is
 /// u = sqrt(T(0)), so stored velocities have m <c^2> / 3 = 1 on average.
-GasState maxwellian_state(const Scene& scene, const RandomStream& rng);
+/// Real is the storage precision (GasState or FloatGasState): the draws are the same, rounded when stored.
+template <class Real = double>
+BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng);
 
 }  // namespace granmc

@@ -44,7 +44,7 @@ RunPlan plan_event(const Scene& scene, RunPlan plan) {
   plan.effects.push_back(c.lambda == 0.0 ? "every candidate collides (Maxwell kernel: no majorant)"
                                          : "constant majorant U_max, raised at candidates, reset at samples");
   const double n = static_cast<double>(scene.species[0].particles);
-  plan.particle_bytes = static_cast<std::uint64_t>(n) * SpeciesStore::bytes_per_particle() * plan.replicas_in_flight;
+  plan.particle_bytes = static_cast<std::uint64_t>(n) * stored_bytes_per_particle(scene) * plan.replicas_in_flight;
   double temperature = scene.initial_temperature;
   if (scene.thermostat.kind == ThermostatKind::white_noise)
     temperature = std::max(temperature, theory::white_noise_steady_temperature(c.lambda, c.rate, c.restitution[0][0],
@@ -57,6 +57,11 @@ RunPlan plan_event(const Scene& scene, RunPlan plan) {
 }
 
 }  // namespace
+
+std::size_t stored_bytes_per_particle(const Scene& scene) noexcept {
+  return scene.run.storage == Storage::single_precision ? FloatSpeciesStore::bytes_per_particle()
+                                                        : SpeciesStore::bytes_per_particle();
+}
 
 RunPlan plan_run(const Scene& scene, int threads) {
   RunPlan plan;
@@ -112,7 +117,7 @@ RunPlan plan_run(const Scene& scene, int threads) {
 
   std::uint64_t particles = 0;
   for (const SpeciesConfig& s : scene.species) particles += static_cast<std::uint64_t>(s.particles);
-  plan.particle_bytes = particles * SpeciesStore::bytes_per_particle() * plan.replicas_in_flight;
+  plan.particle_bytes = particles * stored_bytes_per_particle(scene) * plan.replicas_in_flight;
 
   // Candidates: sum over pairs of 1/2 N_i omega_max^(ij) int u dt, omega_max from the expected largest
   // initial speeds (stored units, unit temperature), int u dt from Haff's law when it applies, else
