@@ -13,7 +13,10 @@ a time:
   - replicas N (event scheme, n fixed): the statistical error, ~ N^-1/2 (its CI is what is fitted);
   - time step dt (time-stepped scheme): the splitting error, measured against the exact n-particle law
     (1 - 1/n) T(t) so that the 1/n part does not mix in;
-  - method: the event scheme against the time-stepped one at dt values, error against wall time.
+  - method: the event scheme against the time-stepped one at dt values, error against wall time;
+  - storage precision (run.storage, event scheme): double against float velocities at n = 64 and n = 2^20,
+    with the paired difference float - double of the same seeds, which resolves the rounding far below
+    the statistical error.
 Each knob's order is the least-squares slope of log error against log knob, with a CI from resampling
 every point within its own CI (1000 draws, lambda_p = 3.2). Writes OUT/table.md, OUT/figure.png, and
 OUT/study.json; runs are cached per scene text (drivers/figure.py's run_point).
@@ -41,8 +44,8 @@ def exact_temperature(t, beta, rate, alpha, t0=1.0):
     return t0 * math.exp(-kappa * t) + 2.0 * beta / kappa * (1.0 - math.exp(-kappa * t))
 
 
-def late_error(stem, scene, n_particle_law):
-    """(relative error of the late-time mean T, its CI, wall seconds) of one run."""
+def late_deviations(stem, scene, n_particle_law):
+    """Per replica, the relative deviation of the late-time mean T from the exact value."""
     with h5py.File(stem + ".h5", "r") as h:
         times = h["/times"][()]
         temperature = h["/temperature/replicas"][()]
@@ -54,10 +57,12 @@ def late_error(stem, scene, n_particle_law):
     exact = np.array([exact_temperature(t, beta, rate, alpha) for t in times[late]])
     if n_particle_law:
         exact = exact * (1.0 - 1.0 / n)
-    per_replica = (temperature[:, late] / exact - 1.0).mean(axis=1)
-    err = per_replica.mean()
-    ci = LAMBDA_P * per_replica.std(ddof=1) / math.sqrt(len(per_replica))
-    return float(err), float(ci)
+    return (temperature[:, late] / exact - 1.0).mean(axis=1)
+
+
+def mean_ci(per_replica):
+    """Replica mean and its CI half-width (001 eq. 31, lambda_p = 3.2)."""
+    return float(per_replica.mean()), float(LAMBDA_P * per_replica.std(ddof=1) / math.sqrt(len(per_replica)))
 
 
 def fitted_order(x, e, ci, rng):
@@ -86,9 +91,10 @@ def main():
     def run(name, scene, n_particle_law=False):
         stem = os.path.join(args.out, name)
         summary = run_point(args.granmc, scene, stem, args.threads)
-        err, ci = late_error(stem, scene, n_particle_law)
+        per_replica = late_deviations(stem, scene, n_particle_law)
+        err, ci = mean_ci(per_replica)
         return {"name": name, "error": err, "ci": ci, "wall": summary["wall_seconds"],
-                "candidates": summary["candidates"]}
+                "candidates": summary["candidates"], "per_replica": per_replica}
 
     study = {}
     # 1. particles, event scheme, n N = 2^18 particle-replicas
@@ -121,6 +127,35 @@ def main():
     event["run"]["replicas"] = 2000
     study["dt"] = rows
     study["dt_event"] = dict(run("dt_event", event, n_particle_law=True), knob=0.0)
+    # 4. storage precision, event scheme, against the n-particle law; same seeds for both precisions
+    rows = []
+    for n, replicas in ((64, 2000), (2 ** 20, 8)):
+        pair = {}
+        for storage in ("double", "float"):
+            s = copy.deepcopy(base)
+            s["run"]["storage"] = storage
+            s["species"][0]["particles"] = n
+            s["run"]["replicas"] = replicas
+            pair[storage] = run(f"storage_{storage}_n{n}", s, n_particle_law=True)
+        diff, diff_ci = mean_ci(pair["float"]["per_replica"] - pair["double"]["per_replica"])
+        for storage in ("double", "float"):
+            rows.append(dict(pair[storage], knob=storage, n=n, replicas=replicas,
+                             bytes=(32 if storage == "double" else 16), paired=(diff, diff_ci)))
+    study["storage"] = rows
+    # 5. recommendations for a target error e, from the measured CI constant and cost; the two cheapest
+    #    are run to check that their total error (against T itself, 1/n included) stays below e
+    study["recommend"] = recommend(study)
+    for r in study["recommend"][:2]:
+        s = copy.deepcopy(base)
+        s["species"][0]["particles"] = r["n"]
+        s["run"]["replicas"] = r["replicas"]
+        r["check"] = run(f"recommend_e{r['target']:g}", s)
+    for key in ("particles", "replicas", "dt", "storage"):
+        for r in study[key]:
+            r.pop("per_replica")
+    for r in study["recommend"][:2]:
+        r["check"].pop("per_replica")
+    study["dt_event"].pop("per_replica")
 
     orders = {
         "particles": fitted_order([r["knob"] for r in study["particles"]], [r["error"] for r in study["particles"]],
@@ -138,6 +173,25 @@ def main():
     write_table(study, os.path.join(args.out, "table.md"))
     plot(study, os.path.join(args.out, "figure.png"))
     print(open(os.path.join(args.out, "table.md")).read())
+
+
+def recommend(study):
+    """The cheapest event-scheme settings for target relative errors e: n, the smallest power of two with
+    1/n <= e/2, then N with CI <= e/2, using CI = c / sqrt(n N) with c measured over the particle and
+    replica rows (median), and the wall seconds per particle-replica of the largest runs (median)."""
+    c = [r["ci"] * math.sqrt(r["knob"] * 2 ** 18 // r["knob"]) for r in study["particles"]]
+    c += [r["ci"] * math.sqrt(256 * r["knob"]) for r in study["replicas"]]
+    c = float(np.median(c))
+    big = [study["replicas"][-1]] + [r for r in study["storage"] if r["n"] > 64 and r["knob"] == "double"]
+    per = float(np.median([r["wall"] / (r["n"] * r["replicas"]) if "n" in r else r["wall"] / (256 * r["knob"])
+                           for r in big]))
+    rows = []
+    for e in (1e-2, 3e-3, 1e-3, 3e-4):
+        n = 2 ** math.ceil(math.log2(2.0 / e))
+        replicas = max(2, math.ceil((2.0 * c / e) ** 2 / n))
+        rows.append({"target": e, "n": n, "replicas": replicas, "c": c, "wall_per": per,
+                     "wall": per * n * replicas})
+    return rows
 
 
 def write_table(study, path):
@@ -165,6 +219,24 @@ def write_table(study, path):
             f.write(f"| dsmc | {r['knob']:g} | {r['error']:+.5f} | {r['ci']:.5f} | {law:+.5f} | {r['wall']:.1f} |\n")
         r = study["dt_event"]
         f.write(f"| event | - | {r['error']:+.5f} | {r['ci']:.5f} | 0 | {r['wall']:.1f} |\n")
+        f.write("\n## Storage precision (event scheme, against (1 - 1/n) T; float - double paired over the same "
+                "seeds)\n\n")
+        f.write("| n | N | storage | bytes per particle | error | CI | float - double (paired) | wall (s) |\n"
+                "|---|---|---|---|---|---|---|---|\n")
+        for r in study["storage"]:
+            d, dci = r["paired"]
+            paired = f"{d:+.2e} +- {dci:.1e}" if r["knob"] == "float" else "-"
+            f.write(f"| {r['n']} | {r['replicas']} | {r['knob']} | {r['bytes']} | {r['error']:+.5f} | {r['ci']:.5f} | "
+                    f"{paired} | {r['wall']:.1f} |\n")
+        rec = study["recommend"]
+        f.write(f"\n## Cheapest settings for a target relative error e (event scheme; CI = c / sqrt(n N) with "
+                f"c = {rec[0]['c']:.2f}, {rec[0]['wall_per'] * 1e6:.2f} us per particle-replica on this run's threads)\n\n")
+        f.write("| target e | n (1/n <= e/2) | N (CI <= e/2) | storage | est. wall (s) | checked: error vs T | CI | wall (s) |\n"
+                "|---|---|---|---|---|---|---|---|\n")
+        for r in rec:
+            check = (f"{r['check']['error']:+.5f} | {r['check']['ci']:.5f} | {r['check']['wall']:.1f}" if "check" in r
+                     else "- | - | -")
+            f.write(f"| {r['target']:g} | {r['n']} | {r['replicas']} | double | {r['wall']:.1f} | {check} |\n")
 
 
 def plot(study, path):
