@@ -16,7 +16,9 @@ a time:
   - method: the event scheme against the time-stepped one at dt values, error against wall time;
   - storage precision (run.storage, event scheme): double against float velocities at n = 64 and n = 2^20,
     with the paired difference float - double of the same seeds, which resolves the rounding far below
-    the statistical error.
+    the statistical error;
+  - early-time Haff (time-stepped scheme, hard spheres, drivers/scenes/accuracy/hcs_early.toml): the
+    initial slope of ln T, exactly -zeta_M (the Maxwellian's cooling rate), against particles n and dt.
 Each knob's order is the least-squares slope of log error against log knob, with a CI from resampling
 every point within its own CI (1000 draws, lambda_p = 3.2). Writes OUT/table.md, OUT/figure.png, and
 OUT/study.json; runs are cached per scene text (drivers/figure.py's run_point).
@@ -63,6 +65,20 @@ def late_deviations(stem, scene, n_particle_law):
 def mean_ci(per_replica):
     """Replica mean and its CI half-width (001 eq. 31, lambda_p = 3.2)."""
     return float(per_replica.mean()), float(LAMBDA_P * per_replica.std(ddof=1) / math.sqrt(len(per_replica)))
+
+
+def early_slope_deviations(stem):
+    """Per replica, the relative deviation of the initial slope of ln T from -zeta_M: ln T(t)/T(0) = s t + b t^2
+    fitted by least squares over the samples (the curvature b is left free: it depends on how fast a2
+    builds up), deviation -s / zeta_M - 1."""
+    with h5py.File(stem + ".h5", "r") as h:
+        times = h["/times"][()]
+        temperature = h["/temperature/replicas"][()]
+        zeta_m = h["/theory"].attrs["cooling_rate0_maxwell"]
+    log_t = np.log(temperature / temperature[:, :1])
+    design = np.vstack([times, times * times]).T
+    slope = np.linalg.lstsq(design, log_t.T, rcond=None)[0][0]
+    return -slope / zeta_m - 1.0
 
 
 def fitted_order(x, e, ci, rng):
@@ -142,7 +158,33 @@ def main():
             rows.append(dict(pair[storage], knob=storage, n=n, replicas=replicas,
                              bytes=(32 if storage == "double" else 16), paired=(diff, diff_ci)))
     study["storage"] = rows
-    # 5. recommendations for a target error e, from the measured CI constant and cost; the two cheapest
+    # 5. early-time Haff, time-stepped scheme: the initial slope against n (n N = 2^25) and dt (n = 2^16)
+    with open(os.path.join(HERE, "hcs_early.toml"), "rb") as f:
+        early = tomllib.load(f)
+
+    def run_early(name, scene, knob):
+        stem = os.path.join(args.out, name)
+        summary = run_point(args.granmc, scene, stem, args.threads)
+        err, ci = mean_ci(early_slope_deviations(stem))
+        return {"name": name, "knob": knob, "error": err, "ci": ci, "wall": summary["wall_seconds"],
+                "n": scene["species"][0]["particles"], "replicas": scene["run"]["replicas"], "dt": scene["run"]["dt"]}
+
+    rows = []
+    for n in (1024, 8192, 65536):
+        s = copy.deepcopy(early)
+        s["species"][0]["particles"] = n
+        s["run"]["replicas"] = 2 ** 25 // n
+        rows.append(run_early(f"early_n{n}", s, n))
+    study["early_particles"] = rows
+    rows = []
+    for dt in (0.005, 0.0025, 0.00125):
+        s = copy.deepcopy(early)
+        s["run"]["dt"] = dt
+        s["species"][0]["particles"] = 65536
+        s["run"]["replicas"] = 2 ** 25 // 65536
+        rows.append(run_early(f"early_dt{dt:g}", s, dt))
+    study["early_dt"] = rows
+    # 6. recommendations for a target error e, from the measured CI constant and cost; the two cheapest
     #    are run to check that their total error (against T itself, 1/n included) stays below e
     study["recommend"] = recommend(study)
     for r in study["recommend"][:2]:
@@ -228,6 +270,13 @@ def write_table(study, path):
             paired = f"{d:+.2e} +- {dci:.1e}" if r["knob"] == "float" else "-"
             f.write(f"| {r['n']} | {r['replicas']} | {r['knob']} | {r['bytes']} | {r['error']:+.5f} | {r['ci']:.5f} | "
                     f"{paired} | {r['wall']:.1f} |\n")
+        f.write("\n## Early-time Haff (time-stepped scheme, hard spheres, alpha = 1/2): initial slope of ln T "
+                "against -zeta_M\n\n")
+        f.write("| knob | n | N | dt | relative error of the slope | CI | wall (s) |\n|---|---|---|---|---|---|---|\n")
+        for key, label in (("early_particles", "n"), ("early_dt", "dt")):
+            for r in study[key]:
+                f.write(f"| {label} | {r['n']} | {r['replicas']} | {r['dt']:g} | {r['error']:+.5f} | {r['ci']:.5f} | "
+                        f"{r['wall']:.1f} |\n")
         rec = study["recommend"]
         f.write(f"\n## Cheapest settings for a target relative error e (event scheme; CI = c / sqrt(n N) with "
                 f"c = {rec[0]['c']:.2f}, {rec[0]['wall_per'] * 1e6:.2f} us per particle-replica on this run's threads)\n\n")
