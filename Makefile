@@ -77,7 +77,8 @@ fig-002-8: build
 
 figures-002: fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8
 
-# Work-precision on 001 Example 3 (docs/accuracy-cost.md): error against particles, replicas, dt, method.
+# Work-precision (docs/accuracy-cost.md): 001 Example 3 against particles, replicas, dt, method and storage;
+# the early-time Haff slope against particles and dt; the recommendation table.
 accuracy-cost: build
 	$(PYTHON) drivers/accuracy_cost.py --granmc $(GRANMC)
 
