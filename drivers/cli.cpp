@@ -32,6 +32,7 @@ struct RunArgs {
   std::optional<std::uint64_t> seed;
   bool quiet = false;
   bool explain = false;
+  std::string spread = "replicas";
 };
 
 /// Candidates per second per thread on this machine's kind, whole runs on 2 threads, for the time estimate
@@ -112,10 +113,15 @@ int run_command(const RunArgs& args) {
   const Scene& scene = *loaded;
   if (args.explain) return explain_command(scene, args);
   const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
+  const bool spread_particles = args.spread == "particles";
+  if (spread_particles) {
+    const std::string why = unsupported_spread_reason(scene);
+    if (!all_ranks_ok(why.empty(), args.scene + ": " + why + "\n")) return exit_bad_input;
+  }
 
   const Place at = place();
   try {
-    const JobResult done = run_job(scene, {out, args.summary}, args.threads, args.quiet);
+    const JobResult done = run_job(scene, {out, args.summary}, args.threads, args.quiet, spread_particles);
     if (at.rank != 0) return exit_ok;  // rank 0 alone reports
     if (!args.quiet && at.size == 1) {
       std::printf("granmc %s: %s, %d replicas, %.1f s on %d threads -> %s%s%s\n", version, args.scene.c_str(),
@@ -155,6 +161,11 @@ int cli_main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   run_cmd->add_option("--seed", run.seed, "Override the scene's run.seed");
   run_cmd->add_flag("--quiet", run.quiet, "No progress line and no closing message");
+  run_cmd->add_option("--spread", run.spread,
+                      "What the MPI ranks share: \"replicas\" (default: each rank runs its replicas) or \"particles\" "
+                      "(each replica is one system spread over all ranks, for systems larger than one machine; "
+                      "docs/scaling.md)")
+      ->check(CLI::IsMember({"replicas", "particles"}));
   run_cmd->add_flag("--explain", run.explain,
                     "Print the kernel, the effects, the memory and a cost estimate, and run nothing");
 

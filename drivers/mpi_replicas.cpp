@@ -182,6 +182,42 @@ World world() {
   return w;
 }
 
+int WorldRanks::rank() const noexcept { return world().rank; }
+int WorldRanks::size() const noexcept { return world().size; }
+
+void WorldRanks::sum(std::span<double> values) const {
+  if (values.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::runtime_error("spread system: a sum of more than 2^31 values");
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+}
+
+double WorldRanks::max(double value) const {
+  double m = value;
+  MPI_Allreduce(&value, &m, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return m;
+}
+
+void WorldRanks::exchange(const std::vector<std::vector<double>>& send, std::vector<std::vector<double>>& receive) const {
+  const std::size_t ranks = send.size();
+  std::vector<int> send_counts(ranks), send_at(ranks), receive_counts(ranks), receive_at(ranks);
+  std::vector<double> out, in;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    send_at[r] = static_cast<int>(out.size());
+    send_counts[r] = static_cast<int>(send[r].size());
+    out.insert(out.end(), send[r].begin(), send[r].end());
+    receive_at[r] = static_cast<int>(in.size());
+    receive_counts[r] = static_cast<int>(receive[r].size());
+    in.resize(in.size() + receive[r].size());
+  }
+  if (out.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+      in.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::runtime_error("spread system: an exchange of more than 2^31 values");
+  MPI_Alltoallv(out.data(), send_counts.data(), send_at.data(), MPI_DOUBLE, in.data(), receive_counts.data(),
+                receive_at.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  for (std::size_t r = 0; r < ranks; ++r)
+    std::copy(in.begin() + receive_at[r], in.begin() + receive_at[r] + receive_counts[r], receive[r].begin());
+}
+
 bool all_ok(bool ok_here) {
   int ok = ok_here ? 1 : 0, all = 0;
   MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);

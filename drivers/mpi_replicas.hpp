@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/core/ranks.hpp"
 #include "kernel/observe/gas_series.hpp"
 
 namespace granmc::mpi {
@@ -115,6 +116,16 @@ World world();
 bool all_ok(bool ok_here);
 /// True on every rank when rank 0's `ok_here` was true (collective).
 bool root_ok(bool ok_here);
+
+/// The ranks of MPI_COMM_WORLD as kernel/core/ranks.hpp's collectives (one system over several ranks).
+class WorldRanks final : public Ranks {
+ public:
+  [[nodiscard]] int rank() const noexcept override;
+  [[nodiscard]] int size() const noexcept override;
+  void sum(std::span<double> values) const override;
+  [[nodiscard]] double max(double value) const override;
+  void exchange(const std::vector<std::vector<double>>& send, std::vector<std::vector<double>>& receive) const override;
+};
 
 /// Ends every rank of the run (MPI_Abort) with this exit status.
 [[noreturn]] void abort_all(int status);

@@ -65,19 +65,26 @@ bool rank0_value(bool value) {
 #endif
 }
 
-JobResult run_job(const Scene& scene, const JobOutputs& outputs, int threads, bool quiet) {
+JobResult run_job(const Scene& scene, const JobOutputs& outputs, int threads, bool quiet, bool spread_particles) {
   const Place at = place();
   const bool show_progress = at.rank == 0 && !quiet && isatty(STDERR_FILENO);
-  ProgressLine progress(static_cast<std::uint64_t>(own_replicas(scene.run.replicas, at)) * (scene.run.samples + 1),
-                        show_progress);
+  const int replicas_here = spread_particles ? scene.run.replicas : own_replicas(scene.run.replicas, at);
+  ProgressLine progress(static_cast<std::uint64_t>(replicas_here) * (scene.run.samples + 1), show_progress);
   RunOptions options;
   options.threads = threads;
   options.on_sample = [&progress] { progress.tick(); };
   options.replica_offset = at.rank;
   options.replica_stride = at.size;
+#ifdef GRANMC_HAVE_MPI
+  const mpi::WorldRanks ranks;
+#else
+  const SingleRank ranks;
+#endif
+  if (spread_particles) options.spread = &ranks;
 
   const auto start = std::chrono::steady_clock::now();
-  RunResult result = completed(run_scene(scene, options));
+  // Spread over the ranks, every rank holds every replica's series; otherwise rank 0 gathers them.
+  RunResult result = spread_particles ? run_scene(scene, options) : completed(run_scene(scene, options));
   result.ranks = at.size;
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

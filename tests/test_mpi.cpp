@@ -198,14 +198,17 @@ class MpiRun : public granmc_test::GranmcDirectory {
     return w;
   }
 
-  /// Runs scene.toml once per way into its own outputs, and checks them all against the first.
-  void expect_identical_runs(const std::vector<Way>& ways, const std::vector<std::string>& must_have) {
+  /// Runs scene.toml once per way (with `options` added to each command) into its own outputs, and checks
+  /// them all against the first.
+  void expect_identical_runs(const std::vector<Way>& ways, const std::vector<std::string>& must_have,
+                             const std::string& options = "") {
     std::vector<std::string> outputs;
     for (std::size_t k = 0; k < ways.size(); ++k) {
       const Way& w = ways[k];
       const std::string stem = "run" + std::to_string(k);
       const Outcome o = granmc(
-          "run scene.toml --seed 77 --out " + stem + ".h5 --summary " + stem + ".json --threads " + w.threads, w.prefix);
+          "run scene.toml --seed 77 --out " + stem + ".h5 --summary " + stem + ".json --threads " + w.threads + options,
+          w.prefix);
       ASSERT_EQ(o.status, 0) << w.name << "\n" << o.stdout_text << o.stderr_text;
       EXPECT_EQ(std::count(o.stdout_text.begin(), o.stdout_text.end(), '\n'), 1) << w.name << ": one closing line\n" << o.stdout_text;
       EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / (stem + ".json")))["ranks"], w.ranks) << w.name;
@@ -351,6 +354,35 @@ TEST_F(MpiRun, ShearWithGaussianThermostatIsBitIdentical) {
   write("scene.toml", cooling_scene + "[thermostat]\nkind = \"gaussian\"\n[shear]\nrate = 0.5\n");
   expect_identical_runs(ways(false), {"/temperature/replicas", "/viscosity/pressure_kinetic",
                                       "/viscosity/pressure_collisional", "/viscosity/eta_star_mean"});
+}
+
+/// One system over the ranks (--spread particles, schemes/spread_dsmc.hpp): 20000 particles are 5 chunks of
+/// 4096, so 2 and 3 ranks split them unevenly and 6 ranks leave one rank without particles.
+const std::string spread_scene = R"([run]
+method = "dsmc"
+seed = 1
+replicas = 2
+t_end = 2.0
+dt = 0.01
+samples = 10
+[[species]]
+particles = 20000
+[collision]
+kernel = "hard-sphere"
+restitution = 0.7
+[output]
+histogram = { shells = 16, radius = 4.0 }
+)";
+
+TEST_F(MpiRun, OneSystemOverRanksIsBitIdentical) {
+  write("scene.toml", spread_scene);
+  expect_identical_runs(ways(false), {"/temperature/replicas", "/species/a/speed_distribution/counts", "/counters/candidates"},
+                        " --spread particles");
+}
+
+TEST_F(MpiRun, OneSystemOverRanksWithGaussianThermostatIsBitIdentical) {
+  write("scene.toml", spread_scene + "[thermostat]\nkind = \"gaussian\"\n");
+  expect_identical_runs(ways(true), {"/temperature/replicas"}, " --spread particles");
 }
 
 TEST_F(MpiRun, IntruderIsBitIdentical) {

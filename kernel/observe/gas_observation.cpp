@@ -25,18 +25,16 @@ GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& mome
   return t;
 }
 
-template <class Real>
-GasTotals observe_gas(const Scene& scene, const BasicGasState<Real>& state, ReplicaSeries& series, bool histogram) {
+Observed record_observation(const Scene& scene, const VelocityScale& scale, const std::vector<SpeciesMoments>& about_origin,
+                            const std::vector<SpeciesMoments>& about_flow, ReplicaSeries& series) {
   const double n = total_density(scene);
-  // Temperatures and cumulants are of the peculiar velocity, about the mixture's flow velocity: zero to
-  // rounding where collisions conserve momentum, but not under white noise (001 eq. 13, Remark 1).
-  const GasTotals totals = gas_totals(scene, gas_moments(state));
-  const std::vector<SpeciesMoments> moments = gas_moments(state, (1.0 / totals.mass) * totals.momentum);
+  const GasTotals totals = gas_totals(scene, about_origin);
+  const std::vector<SpeciesMoments>& moments = about_flow;
   double theta_mix = 0.0;  // sum_i x_i m_i <c^2> / 3, the mixture temperature in stored units
   for (std::size_t i = 0; i < moments.size(); ++i) {
     const SpeciesConfig& sp = scene.species[i];
     const double theta = sp.mass * moments[i].mean_c2() / 3.0;
-    const double log_t = state.scale.log_temperature(theta);
+    const double log_t = scale.log_temperature(theta);
     SpeciesSeries& s = series.species[i];
     s.temperature.push_back(std::exp(log_t));
     s.log_temperature.push_back(log_t);
@@ -44,21 +42,32 @@ GasTotals observe_gas(const Scene& scene, const BasicGasState<Real>& state, Repl
     s.a3.push_back(moments[i].a3());
     theta_mix += sp.density / n * theta;
   }
+  const double log_t = scale.log_temperature(theta_mix);
+  series.temperature.push_back(std::exp(log_t));
+  series.log_temperature.push_back(log_t);
+  series.momentum.push_back(scale.u() * totals.momentum);
+  series.momentum_relative.push_back(norm(totals.momentum) / std::sqrt(totals.mass * totals.twice_energy));
+  return {totals, theta_mix};
+}
+
+template <class Real>
+GasTotals observe_gas(const Scene& scene, const BasicGasState<Real>& state, ReplicaSeries& series, bool histogram) {
+  // Temperatures and cumulants are of the peculiar velocity, about the mixture's flow velocity: zero to
+  // rounding where collisions conserve momentum, but not under white noise (001 eq. 13, Remark 1).
+  const std::vector<SpeciesMoments> about_origin = gas_moments(state);
+  const GasTotals totals = gas_totals(scene, about_origin);
+  const Observed o = record_observation(scene, state.scale, about_origin,
+                                        gas_moments(state, (1.0 / totals.mass) * totals.momentum), series);
   if (histogram) {
-    const double unit = histogram_speed_unit(scene, state.scale, theta_mix);
-    for (std::size_t i = 0; i < moments.size(); ++i) {
+    const double unit = histogram_speed_unit(scene, state.scale, o.theta_mixture);
+    for (std::size_t i = 0; i < state.species.size(); ++i) {
       std::vector<double>& counts = series.species[i].speed_counts;
       counts.resize(static_cast<std::size_t>(scene.histogram.shells), 0.0);
       add_speeds(state.species[i], unit, scene.histogram.radius, counts);
     }
     ++series.histogram_samples;
   }
-  const double log_t = state.scale.log_temperature(theta_mix);
-  series.temperature.push_back(std::exp(log_t));
-  series.log_temperature.push_back(log_t);
-  series.momentum.push_back(state.scale.u() * totals.momentum);
-  series.momentum_relative.push_back(norm(totals.momentum) / std::sqrt(totals.mass * totals.twice_energy));
-  return totals;
+  return o.totals;
 }
 
 template std::vector<SpeciesMoments> gas_moments(const GasState&, const Vec3&);

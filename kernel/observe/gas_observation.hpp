@@ -22,6 +22,18 @@ struct GasTotals {
 /// (The moments must be about the origin.)
 GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& moments) noexcept;
 
+/// What record_observation returns: the totals about the origin and the mixture temperature in stored units.
+struct Observed {
+  GasTotals totals;
+  double theta_mixture = 0.0;  // sum_i x_i m_i <|c - flow|^2> / 3
+};
+
+/// Appends the temperatures, cumulants and momentum of one observation to `series`, from the moments of
+/// every species about the origin and about the flow velocity (the part of observe_gas that needs no
+/// particle; a system spread over ranks sums its moments first, schemes/spread_dsmc.hpp).
+Observed record_observation(const Scene& scene, const VelocityScale& scale, const std::vector<SpeciesMoments>& about_origin,
+                            const std::vector<SpeciesMoments>& about_flow, ReplicaSeries& series);
+
 /// Appends one observation of `state` to `series` (series.species must have one entry per species); with
 /// `histogram`, also adds the scaled speeds to each species' speed_counts. Returns the totals it summed
 /// (stored units), for checks the caller makes on the same state.

@@ -5,9 +5,11 @@
 namespace granmc {
 
 template <class Real>
-SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre) noexcept {
+SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre, std::size_t first,
+                               std::size_t last) noexcept {
   CompensatedSum s2, s4, s6, px, py, pz;
-  store.for_each_velocity([&](const Vec3& c) {
+  for (std::size_t k = first; k < last; ++k) {
+    const Vec3 c = store.velocity(k);
     const double c2 = norm2(c - centre);
     s2.add(c2);
     s4.add(c2 * c2);
@@ -15,9 +17,9 @@ SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3&
     px.add(c.x);
     py.add(c.y);
     pz.add(c.z);
-  });
+  }
   SpeciesMoments m;
-  m.particles = store.size();
+  m.particles = last - first;
   m.sum_c2 = s2.value();
   m.sum_c4 = s4.value();
   m.sum_c6 = s6.value();
@@ -25,7 +27,7 @@ SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3&
   return m;
 }
 
-template SpeciesMoments species_moments(const SpeciesStore&, const Vec3&) noexcept;
-template SpeciesMoments species_moments(const FloatSpeciesStore&, const Vec3&) noexcept;
+template SpeciesMoments species_moments(const SpeciesStore&, const Vec3&, std::size_t, std::size_t) noexcept;
+template SpeciesMoments species_moments(const FloatSpeciesStore&, const Vec3&, std::size_t, std::size_t) noexcept;
 
 }  // namespace granmc

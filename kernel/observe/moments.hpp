@@ -30,8 +30,16 @@ struct SpeciesMoments {
   }
 };
 
-/// (Instantiated for both storage precisions, SpeciesStore and FloatSpeciesStore.)
+/// The moments of the particles [first, last) of the store (a part of a system spread over ranks sums
+/// these per chunk, schemes/spread_dsmc.hpp). (Instantiated for SpeciesStore and FloatSpeciesStore.)
 template <class Real>
-SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre = {}) noexcept;
+SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre, std::size_t first,
+                               std::size_t last) noexcept;
+
+/// The moments of every particle of the store.
+template <class Real>
+SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre = {}) noexcept {
+  return species_moments(store, centre, 0, store.size());
+}
 
 }  // namespace granmc

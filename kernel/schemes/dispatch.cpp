@@ -19,6 +19,8 @@
 #include "kernel/schemes/intruder_dsmc_1d.hpp"
 #include "kernel/schemes/intruder_needle.hpp"
 #include "kernel/schemes/replica_runner.hpp"
+#include "kernel/schemes/sample_times.hpp"
+#include "kernel/schemes/spread_dsmc.hpp"
 #include "kernel/theory/sonine.hpp"
 
 namespace granmc {
@@ -86,6 +88,23 @@ RunResult run_dsmc_hard_spheres(const Scene& scene, const RunOptions& options) {
   return run_dsmc<HardSphere, false>(scene, options, shear);
 }
 
+/// Every replica spread over options.spread, one after another (schemes/spread_dsmc.hpp).
+RunResult run_spread(const Scene& scene, const RunOptions& options) {
+  auto run = [&](auto kernel) {
+    RunResult result;
+    result.times = sample_times(scene.run);
+    result.species_names.push_back(scene.species[0].name);
+    result.threads = 1;
+    for (int r = 0; r < scene.run.replicas; ++r)
+      result.replicas.push_back(run_spread_replica<decltype(kernel)>(scene, static_cast<std::uint64_t>(r), result.times,
+                                                                    *options.spread, options.on_sample));
+    return result;
+  };
+  if (scene.collision.kernel == CollisionKernel::maxwell) return run(MaxwellPseudomolecules{});
+  if (scene.collision.kernel == CollisionKernel::vhs) return run(VariableHardSpheres{});
+  return run(HardSphere{});
+}
+
 /// The instantiation name's note on the storage precision (none for the default, double).
 std::string storage_name(const Scene& scene) {
   return scene.run.storage == Storage::single_precision ? ", float storage (16 bytes per particle)" : "";
@@ -119,6 +138,21 @@ std::string unsupported_reason(const Scene& scene) {
   return "this version of granmc cannot run " + what + " yet; " + supported_list;
 }
 
+std::string unsupported_spread_reason(const Scene& scene) {
+  std::string what;
+  if (scene.run.method != Method::dsmc) what = "a method other than \"dsmc\"";
+  else if (scene.intruder) what = "an [intruder] scene";
+  else if (scene.species.size() != 1) what = "two species";
+  else if (scene.shear_rate != 0.0) what = "a [shear] rate";
+  else if (scene.relaxation) what = "the [relaxation] term";
+  else if (scene.thermostat.kind == ThermostatKind::white_noise) what = "the white-noise thermostat";
+  else if (scene.run.storage != Storage::double_precision) what = "run.storage = \"float\"";
+  if (what.empty()) return {};
+  return "one system over several ranks (--spread particles) is not implemented for " + what +
+         "; it runs method \"dsmc\" with one species, any kernel and packing_fraction, thermostat \"none\" or "
+         "\"gaussian\", double storage (docs/scaling.md)";
+}
+
 std::string instantiation_name(const Scene& scene) {
   if (scene.run.method == Method::gillespie && scene.intruder->dimension == 2) return "gillespie-needle<gaussian-bath>";
   if (scene.run.method == Method::dsmc && scene.intruder)
@@ -148,6 +182,10 @@ std::string instantiation_name(const Scene& scene) {
 
 RunResult run_scene(const Scene& scene, const RunOptions& options) {
   if (const std::string why = unsupported_reason(scene); !why.empty()) throw std::invalid_argument(why);
+  if (options.spread) {
+    if (const std::string why = unsupported_spread_reason(scene); !why.empty()) throw std::invalid_argument(why);
+    return run_spread(scene, options);
+  }
   if (scene.run.method == Method::gillespie) {
     const IntruderConfig& in = *scene.intruder;
     if (in.dimension == 2)

@@ -11,7 +11,12 @@ namespace granmc {
 /// Empty if granmc can run the scene; otherwise why not, and what is supported.
 std::string unsupported_reason(const Scene& scene);
 
-/// Runs the scene (precondition: unsupported_reason(scene) is empty).
+/// Empty if granmc can spread each replica of the scene over ranks (RunOptions::spread,
+/// schemes/spread_dsmc.hpp); otherwise why not, and what is supported.
+std::string unsupported_spread_reason(const Scene& scene);
+
+/// Runs the scene (precondition: unsupported_reason(scene) is empty, and unsupported_spread_reason(scene)
+/// too when options.spread is set).
 RunResult run_scene(const Scene& scene, const RunOptions& options);
 
 /// Whether the collision stage shifts the contact velocity (shear in the Enskog gas,

@@ -12,6 +12,15 @@
 
 namespace granmc {
 
+/// The whole-run counters of a time-stepped replica (Dsmc or SpreadDsmc) into its series.
+template <class Sim>
+void record_run_counters(const Sim& sim, ReplicaSeries& series) {
+  series.candidates = sim.tally().candidates;
+  series.majorant_updates = sim.tally().majorant_updates;
+  series.rescales = sim.rescales();
+  series.momentum_removed_relative = sim.momentum_removed_relative();
+}
+
 template <class Real, class Kernel, class... Effects>
 ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
                                const RunOptions& options, Effects... effects) {
@@ -36,10 +45,7 @@ ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const 
   for (const CollisionTally& pair : sim.pair_tallies()) series.pair_collisions.push_back(pair.collisions);
   for (std::size_t q = 0; q < initial_majorant.size(); ++q)
     series.majorant_growth.push_back(sim.omega_max()[q] / initial_majorant[q]);
-  series.candidates = sim.tally().candidates;
-  series.majorant_updates = sim.tally().majorant_updates;
-  series.rescales = sim.rescales();
-  series.momentum_removed_relative = sim.momentum_removed_relative();
+  record_run_counters(sim, series);
   return series;
 }
 

@@ -1,0 +1,357 @@
+#pragma once
+// One replica of the time-stepped scheme (000 sec. 3) spread over several ranks: for a system larger than
+// one machine's memory (docs/scaling.md, "One system over several ranks"). One species, no free-flight
+// effect; the Gaussian thermostat (it only moves the velocity scale) may act after the collisions.
+//
+// Rank r holds the particles of chunks [C r / R, C (r + 1) / R) of `chunk` consecutive global indices.
+// Every rank draws the whole step's candidate list from the counter-based stream, the same words as the
+// one-process stage (schemes/collision_stage.hpp: indices from block 2s, direction and acceptance from
+// block 2s + 1), and sorts the candidates into waves: a candidate's wave is one more than the latest wave
+// of an earlier candidate that shares a particle with it. Candidates of one wave share no particle, so
+// they commute; every particle sees its candidates in list order, as in the one-process loop. In a wave
+// the owner of k does the candidate; a partner l held elsewhere comes in one exchange and goes back in a
+// second.
+//
+// What differs from schemes/dsmc.hpp, and why the law is the same:
+//  - The majorant is the step's: a candidate above it collides (the paper's rule, 000 sec. 3) and the
+//    raise takes effect at the next step instead of the next candidate. Without a raise (the rule
+//    thereafter; `make stability`) the chain is the one-process chain; at a raise both are the paper's
+//    approximation, counted in majorant_updates.
+//  - Sums over particles are compensated per chunk and then over the chunks in order; the energy loss of
+//    a step is summed over the candidates in list order. Both are the same bits for any number of ranks
+//    (tests/test_mpi.cpp), but not the bits of schemes/dsmc.hpp, which sums over all particles at once:
+//    the two runs are two realizations of one law (tests/test_spread.cpp checks it against theory).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "kernel/collide/impact_direction.hpp"
+#include "kernel/collide/inelastic_rule.hpp"
+#include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/core/philox_stream.hpp"
+#include "kernel/core/ranks.hpp"
+#include "kernel/core/sampling.hpp"
+#include "kernel/core/scene.hpp"
+#include "kernel/core/species_store.hpp"
+#include "kernel/effects/gaussian_thermostat.hpp"
+#include "kernel/observe/compensated_sum.hpp"
+#include "kernel/observe/gas_observation.hpp"
+#include "kernel/observe/speed_histogram.hpp"
+#include "kernel/schemes/collision_stage.hpp"
+#include "kernel/schemes/dsmc_replica.hpp"
+#include "kernel/schemes/gas_state.hpp"
+#include "kernel/schemes/sample_times.hpp"
+
+namespace granmc {
+
+template <class Kernel>
+class SpreadDsmc {
+ public:
+  /// Particles per partial sum; a multiple of every batch of the stream (16).
+  static constexpr std::size_t chunk = 4096;
+  static constexpr double rescale_factor = 1.25;  // as schemes/dsmc.hpp
+
+  SpreadDsmc(const Scene& scene, std::uint64_t replica, const Ranks& ranks)
+      : scene_(scene),
+        ranks_(ranks),
+        rng_(scene.run.seed, replica),
+        kernel_(Kernel::from_scene(scene)),
+        pair_(pair_coefficients(scene).at(0)),
+        n_(static_cast<std::size_t>(scene.species.at(0).particles)),
+        mass_(scene.species[0].mass) {
+    if (scene.species.size() != 1) throw std::invalid_argument("a system spread over ranks has one species");
+    if (n_ < 2) throw std::invalid_argument("a system spread over ranks needs at least two particles");
+    chunks_ = (n_ + chunk - 1) / chunk;
+    const auto r = static_cast<std::size_t>(ranks.rank()), size = static_cast<std::size_t>(ranks.size());
+    first_chunk_ = chunks_ * r / size;
+    lo_ = std::min(n_, first_chunk_ * chunk);
+    hi_ = std::min(n_, chunks_ * (r + 1) / size * chunk);
+    state_.species.emplace_back(hi_ - lo_);
+    state_.scale.log_u = 0.5 * std::log(scene.initial_temperature);
+    // The Maxwellian start of schemes/initial_state.cpp, particle k from the same block (000 eq. 13).
+    const double width = 1.0 / std::sqrt(mass_);
+    for (std::size_t k = lo_; k < hi_; ++k) {
+      const RandomBlock w = rng_.block(RngPurpose::initial_velocity, 0, 0, k);
+      double z[4];
+      standard_normal_pair(uniform_open(w[0]), uniform_open(w[1]), z[0], z[1]);
+      standard_normal_pair(uniform_open(w[2]), uniform_open(w[3]), z[2], z[3]);
+      store().set_velocity(k - lo_, {width * z[0], width * z[1], width * z[2]});
+    }
+    const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments({}).sum_c;
+    store().for_each_velocity([&](Vec3& c) { c -= mean; });
+    rescale();
+    rescales_ = 0;
+    momentum_removed_ = 0.0;
+    log_temperature0_ = log_temperature();
+    double max2 = 0.0;
+    store().for_each_velocity([&](const Vec3& c) { max2 = std::max(max2, norm2(c)); });
+    const double max_speed = std::sqrt(ranks_.max(max2));
+    omega_max_ = majorant_bound<NoCollisionShift>(kernel_, pair_, 2.0 * max_speed);
+    initial_omega_max_ = omega_max_;
+  }
+
+  [[nodiscard]] const CollisionTally& tally() const noexcept { return total_; }
+  [[nodiscard]] double omega_max() const noexcept { return omega_max_; }
+  [[nodiscard]] double initial_omega_max() const noexcept { return initial_omega_max_; }
+  [[nodiscard]] std::uint64_t rescales() const noexcept { return rescales_; }
+  [[nodiscard]] double momentum_removed_relative() const noexcept { return momentum_removed_; }
+  [[nodiscard]] double tracked_twice_energy() const noexcept { return twice_energy_; }
+  /// Waves of the steps so far (the sequential depth of the collision stage over ranks).
+  [[nodiscard]] std::uint64_t waves() const noexcept { return waves_; }
+
+  /// Steps until the time reaches t (the last step shortened to land on t), as Dsmc::advance_to.
+  void advance_to(double t) {
+    while (state_.time < t) {
+      const double dt = std::min(step_length(), t - state_.time);
+      step(dt);
+      state_.time = state_.time + dt >= t ? t : state_.time + dt;
+    }
+  }
+
+  /// Appends one observation (every rank gets the same series); returns the summed sum m |c|^2.
+  double observe(ReplicaSeries& series, bool histogram) {
+    const SpeciesMoments origin = moments({});
+    const Vec3 flow = (1.0 / static_cast<double>(n_)) * origin.sum_c;
+    const Observed o = record_observation(scene_, state_.scale, {origin}, {moments(flow)}, series);
+    if (histogram) {
+      std::vector<double> counts(static_cast<std::size_t>(scene_.histogram.shells), 0.0);
+      add_speeds(store(), histogram_speed_unit(scene_, state_.scale, o.theta_mixture), scene_.histogram.radius, counts);
+      ranks_.sum(counts);  // whole numbers: exact in any order
+      std::vector<double>& total = series.species[0].speed_counts;
+      total.resize(counts.size(), 0.0);
+      for (std::size_t s = 0; s < counts.size(); ++s) total[s] += counts[s];
+      ++series.histogram_samples;
+    }
+    return o.totals.twice_energy;
+  }
+
+ private:
+  SpeciesStore& store() noexcept { return state_.species[0]; }
+  [[nodiscard]] int owner(std::uint64_t k) const noexcept {
+    // the rank whose chunks hold k: the largest r with floor(chunks r / R) <= k / chunk
+    const std::uint64_t c = k / chunk, size = static_cast<std::uint64_t>(ranks_.size());
+    std::uint64_t r = (c * size) / chunks_;
+    while (r + 1 < size && chunks_ * (r + 1) / size <= c) ++r;
+    while (chunks_ * r / size > c) --r;
+    return static_cast<int>(r);
+  }
+
+  /// Moments of all particles about `centre`: compensated sums per chunk, then over the chunks in order.
+  SpeciesMoments moments(const Vec3& centre) {
+    constexpr std::size_t fields = 6;
+    std::vector<double> parts(fields * chunks_, 0.0);
+    for (std::size_t c = first_chunk_; c * chunk < hi_; ++c) {
+      const SpeciesMoments m = species_moments(store(), centre, c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_);
+      const double values[fields] = {m.sum_c2, m.sum_c4, m.sum_c6, m.sum_c.x, m.sum_c.y, m.sum_c.z};
+      std::copy(values, values + fields, parts.begin() + static_cast<std::ptrdiff_t>(fields * c));
+    }
+    ranks_.sum(parts);
+    CompensatedSum total[fields];
+    for (std::size_t c = 0; c < chunks_; ++c)
+      for (std::size_t f = 0; f < fields; ++f) total[f].add(parts[fields * c + f]);
+    SpeciesMoments m;
+    m.particles = n_;
+    m.sum_c2 = total[0].value();
+    m.sum_c4 = total[1].value();
+    m.sum_c6 = total[2].value();
+    m.sum_c = {total[3].value(), total[4].value(), total[5].value()};
+    return m;
+  }
+
+  double log_temperature() const noexcept {
+    return state_.scale.log_temperature(twice_energy_ / (3.0 * static_cast<double>(n_)));
+  }
+  double step_length() const noexcept {
+    if (scene_.run.dt_scaling == DtScaling::fixed) return scene_.run.dt;
+    return scene_.run.dt * std::exp(0.5 * (log_temperature0_ - log_temperature()));
+  }
+
+  void step(double dt) {
+    const double u_dt = std::exp(kernel_.lambda * state_.scale.log_u + std::log(dt));
+    // 1/2 (N - 1) omega_max dt candidates with the fraction carried (schemes/dsmc.hpp)
+    const double wanted = 0.5 * static_cast<double>(n_ - 1) * omega_max_ * u_dt + carried_;
+    if (!(wanted < static_cast<double>(RandomStream::counter_limit / 8)))
+      throw std::runtime_error("time step too large: " + std::to_string(wanted) + " collision candidates in one step");
+    const double whole = std::floor(wanted);
+    carried_ = wanted - whole;
+    const auto count = static_cast<std::size_t>(whole);
+
+    // The candidate list and its waves, the same on every rank.
+    std::vector<std::uint64_t> k(count), l(count);
+    std::vector<std::uint32_t> wave(count);
+    std::unordered_map<std::uint64_t, std::uint32_t> latest;
+    latest.reserve(2 * count);
+    std::uint32_t waves = 0;
+    for (std::size_t s = 0; s < count; ++s) {
+      const RandomBlock w = rng_.block(RngPurpose::collision_pair, 0, state_.step, 2 * s);
+      k[s] = uniform_index(w[0], w[1], n_);
+      l[s] = uniform_index(w[2], w[3], n_ - 1);
+      l[s] += static_cast<std::uint64_t>(l[s] >= k[s]);
+      std::uint32_t& wk = latest[k[s]];
+      std::uint32_t& wl = latest[l[s]];
+      wave[s] = std::max(wk, wl) + 1;
+      wk = wl = wave[s];
+      waves = std::max(waves, wave[s]);
+    }
+    std::vector<std::size_t> start(waves + 2, 0), order(count);  // counting sort: list order within a wave
+    for (std::size_t s = 0; s < count; ++s) ++start[wave[s] + 1];
+    for (std::uint32_t w = 1; w <= waves; ++w) start[w + 1] += start[w];
+    for (std::size_t s = 0; s < count; ++s) order[start[wave[s]]++] = s;
+    for (std::uint32_t w = waves; w >= 1; --w) start[w] = start[w - 1];  // back to the first of each wave
+
+    std::vector<double> loss(count, 0.0);  // 2 (energy loss) of candidate s, filled by the owner of k
+    double counts[2] = {0.0, 0.0};         // collisions, candidates above the majorant (this rank's)
+    double above = 0.0;                    // the largest omega above the majorant
+    const int me = ranks_.rank();
+    const auto R = static_cast<std::size_t>(ranks_.size());
+    std::vector<std::vector<double>> out(R), in(R);
+    for (std::uint32_t w = 1; w <= waves; ++w) {
+      const std::size_t* first = order.data() + start[w];
+      const std::size_t* last = order.data() + start[w + 1];
+      for (auto& b : out) b.clear();
+      for (auto& b : in) b.clear();
+      for (const std::size_t* p = first; p != last; ++p) {  // partners held here for candidates done elsewhere
+        const int rk = owner(k[*p]), rl = owner(l[*p]);
+        if (rl == me && rk != me) push(out[static_cast<std::size_t>(rk)], store().velocity(l[*p] - lo_));
+        if (rk == me && rl != me) in[static_cast<std::size_t>(rl)].resize(in[static_cast<std::size_t>(rl)].size() + 3);
+      }
+      ranks_.exchange(out, in);
+      std::vector<std::size_t> read(R, 0);
+      for (auto& b : out) b.clear();
+      for (const std::size_t* p = first; p != last; ++p) {
+        const std::size_t s = *p;
+        const int rk = owner(k[s]), rl = owner(l[s]);
+        if (rk != me) continue;
+        Vec3 vk = store().velocity(k[s] - lo_);
+        Vec3 vl = rl == me ? store().velocity(l[s] - lo_) : pull(in[static_cast<std::size_t>(rl)], read[static_cast<std::size_t>(rl)]);
+        collide(s, vk, vl, loss, counts, above);
+        store().set_velocity(k[s] - lo_, vk);
+        if (rl == me) store().set_velocity(l[s] - lo_, vl);
+        else push(out[static_cast<std::size_t>(rl)], vl);
+      }
+      for (auto& b : in) b.clear();
+      for (const std::size_t* p = first; p != last; ++p) {
+        const int rk = owner(k[*p]), rl = owner(l[*p]);
+        if (rl == me && rk != me) in[static_cast<std::size_t>(rk)].resize(in[static_cast<std::size_t>(rk)].size() + 3);
+      }
+      ranks_.exchange(out, in);
+      std::fill(read.begin(), read.end(), 0);
+      for (const std::size_t* p = first; p != last; ++p) {
+        const int rk = owner(k[*p]), rl = owner(l[*p]);
+        if (rl == me && rk != me)
+          store().set_velocity(l[*p] - lo_, pull(in[static_cast<std::size_t>(rk)], read[static_cast<std::size_t>(rk)]));
+      }
+    }
+    ranks_.sum(loss);  // one nonzero per candidate: the owner's
+    ranks_.sum(counts);
+    CollisionTally tally;
+    for (const double x : loss) tally.twice_energy_loss += x;  // list order, as the one-process stage
+    tally.candidates = count;
+    tally.collisions = static_cast<std::uint64_t>(counts[0]);
+    tally.majorant_updates = static_cast<std::uint64_t>(counts[1]);
+    omega_max_ = std::max(omega_max_, ranks_.max(above));  // the raise, from the next step on
+    waves_ += waves;
+
+    twice_energy_ -= tally.twice_energy_loss;
+    if (scene_.thermostat.kind == ThermostatKind::gaussian)
+      twice_energy_ += GaussianThermostat{scene_.thermostat.zeta_is_cooling_rate, scene_.thermostat.zeta}.apply(
+          state_, {dt, twice_energy_, tally.twice_energy_loss, &rng_});
+    total_.candidates += tally.candidates;
+    total_.collisions += tally.collisions;
+    total_.majorant_updates += tally.majorant_updates;
+    total_.twice_energy_loss += tally.twice_energy_loss;
+    ++state_.step;
+    if (twice_energy_ < reference_twice_energy_ / rescale_factor || twice_energy_ > reference_twice_energy_ * rescale_factor)
+      rescale();
+  }
+
+  /// Candidate s on its two velocities: schemes/collision_stage.hpp's acceptance on the mean over sigma-hat,
+  /// then sigma-hat given the collision, against the step's majorant.
+  void collide(std::size_t s, Vec3& vk, Vec3& vl, std::vector<double>& loss, double (&counts)[2], double& above) const {
+    const RandomBlock w = rng_.block(RngPurpose::collision_pair, 0, state_.step, 2 * s + 1);
+    const Vec3 g = vk - vl;
+    const double g2 = norm2(g);
+    const double omega = pair_.rate_prefactor * kernel_.mean_rate(g2);
+    if (omega > omega_max_) {
+      above = std::max(above, omega);
+      counts[1] += 1.0;
+    } else if (uniform_open(w[2]) * omega_max_ > omega) {
+      return;
+    }
+    const ImpactDirection d = impact_direction(g, std::sqrt(g2), unit_vector(uniform_open(w[0]), uniform_open(w[1])));
+    if (!(d.g_sigma > 0.0)) return;
+    inelastic_collision(vk, vl, d.sigma, d.g_sigma, pair_);
+    loss[s] = 2.0 * pair_.energy_loss * d.g_sigma * d.g_sigma;
+    counts[0] += 1.0;
+  }
+
+  static void push(std::vector<double>& b, const Vec3& v) { b.insert(b.end(), {v.x, v.y, v.z}); }
+  static Vec3 pull(const std::vector<double>& b, std::size_t& at) {
+    const Vec3 v{b[at], b[at + 1], b[at + 2]};
+    at += 3;
+    return v;
+  }
+
+  /// Dsmc::rescale over all ranks: removes the centre-of-mass velocity, unit stored temperature.
+  void rescale() {
+    const SpeciesMoments m = moments({});
+    const double total_mass = mass_ * static_cast<double>(n_);
+    const Vec3 momentum = mass_ * m.sum_c;
+    const double twice = mass_ * m.sum_c2;
+    const Vec3 v_cm = (1.0 / total_mass) * momentum;
+    momentum_removed_ += norm(momentum) / std::sqrt(total_mass * twice);
+    const double twice_energy = twice - norm2(momentum) / total_mass;
+    const double s = std::sqrt(3.0 * static_cast<double>(n_) / twice_energy);
+    store().for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
+    state_.scale.log_u -= std::log(s);
+    twice_energy_ = reference_twice_energy_ = 3.0 * static_cast<double>(n_);
+    ++rescales_;
+  }
+
+  const Scene& scene_;
+  const Ranks& ranks_;
+  RandomStream rng_;
+  Kernel kernel_;
+  PairCoefficients pair_;
+  std::size_t n_;
+  double mass_;
+  std::size_t chunks_ = 0, first_chunk_ = 0;
+  std::size_t lo_ = 0, hi_ = 0;  // this rank's particles: global indices [lo_, hi_)
+  GasState state_;               // one species: this rank's particles only
+  double omega_max_ = 0.0, initial_omega_max_ = 0.0;
+  double carried_ = 0.0;
+  CollisionTally total_;
+  double twice_energy_ = 0.0, reference_twice_energy_ = 0.0;
+  double log_temperature0_ = 0.0;
+  double momentum_removed_ = 0.0;
+  std::uint64_t rescales_ = 0;
+  std::uint64_t waves_ = 0;
+};
+
+/// One replica from t = 0 to t_end over `ranks`, observed at the sample times (every rank returns it).
+template <class Kernel>
+ReplicaSeries run_spread_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
+                                 const Ranks& ranks, const std::function<void()>& on_sample) {
+  SpreadDsmc<Kernel> sim(scene, replica, ranks);
+  ReplicaSeries series;
+  series.species.resize(1);
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    sim.advance_to(times[k]);
+    const double summed = sim.observe(series, k >= first_stationary_sample(times.size()));
+    series.energy_residual =
+        std::max(series.energy_residual.value_or(0.0), std::abs(sim.tracked_twice_energy() / summed - 1.0));
+    series.collisions.push_back(static_cast<double>(sim.tally().collisions));
+    if (on_sample) on_sample();
+  }
+  series.pair_collisions.push_back(sim.tally().collisions);
+  series.majorant_growth.push_back(sim.omega_max() / sim.initial_omega_max());
+  record_run_counters(sim, series);
+  return series;
+}
+
+}  // namespace granmc

@@ -1,0 +1,83 @@
+// One system over several ranks (schemes/spread_dsmc.hpp) in one process (SingleRank): the wave-ordered
+// stage draws the same candidates from the same words as the one-process stage and, as long as the
+// majorant is not raised, makes the same collisions. Only the order of the sums over particles differs
+// (per chunk, then over chunks), so the observations agree to rounding: the same chain, hence the same
+// law. tests/test_mpi.cpp checks that 2, 3 and 6 ranks give the bits of one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "kernel/core/ranks.hpp"
+#include "kernel/schemes/dispatch.hpp"
+
+using namespace granmc;
+
+namespace {
+
+Scene cooling(ThermostatKind thermostat) {
+  Scene s;
+  s.run.seed = 31;
+  s.run.replicas = 2;
+  s.run.t_end = 10.0;  // T falls about 25-fold without the thermostat: several rescalings
+  s.run.dt = 0.01;
+  s.run.samples = 20;
+  s.species.push_back({"a", 1.0, 1.0, 1.0, 10000});
+  s.collision.restitution = {{{0.7, 0.7}, {0.7, 0.7}}};
+  s.thermostat.kind = thermostat;
+  s.histogram = {32, 4.0};
+  return s;
+}
+
+/// `one` receives the one-process run.
+void expect_same_chain(const Scene& s, RunResult& one) {
+  ASSERT_TRUE(unsupported_spread_reason(s).empty()) << unsupported_spread_reason(s);
+  one = run_scene(s, {});
+  const SingleRank single;
+  RunOptions spread;
+  spread.spread = &single;
+  const RunResult waves = run_scene(s, spread);
+  ASSERT_EQ(waves.replicas.size(), one.replicas.size());
+  for (std::size_t r = 0; r < one.replicas.size(); ++r) {
+    const ReplicaSeries &a = one.replicas[r], &b = waves.replicas[r];
+    EXPECT_EQ(a.majorant_updates, 0u) << "a raise would make the two stages differ (by design)";
+    EXPECT_EQ(b.majorant_updates, 0u);
+    EXPECT_EQ(b.candidates, a.candidates);
+    EXPECT_EQ(b.collisions, a.collisions) << "the same accepted candidates at every sample";
+    EXPECT_EQ(b.rescales, a.rescales);
+    EXPECT_EQ(b.species[0].speed_counts, a.species[0].speed_counts);
+    for (std::size_t k = 0; k < a.temperature.size(); ++k) {
+      EXPECT_NEAR(b.temperature[k] / a.temperature[k], 1.0, 1e-12) << "replica " << r << ", sample " << k;
+      EXPECT_NEAR(b.species[0].a2[k], a.species[0].a2[k], 1e-12) << "replica " << r << ", sample " << k;
+    }
+    EXPECT_LT(b.energy_residual.value(), 1e-12);
+  }
+  EXPECT_GT(one.replicas[0].collisions.back(), 1e5);
+}
+
+}  // namespace
+
+TEST(SpreadSystem, CoolingMakesTheCollisionsOfTheOneProcessStage) {
+  RunResult one;
+  expect_same_chain(cooling(ThermostatKind::none), one);
+  EXPECT_LT(one.replicas[0].temperature.back(), 0.1 * one.replicas[0].temperature.front()) << "the gas cooled";
+  EXPECT_GT(one.replicas[0].rescales, 3u);
+}
+
+TEST(SpreadSystem, GaussianThermostatMakesTheCollisionsOfTheOneProcessStage) {
+  RunResult one;
+  expect_same_chain(cooling(ThermostatKind::gaussian), one);
+}
+
+TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
+  Scene s = cooling(ThermostatKind::white_noise);
+  s.thermostat.beta = 1.0;
+  EXPECT_NE(unsupported_spread_reason(s).find("white-noise"), std::string::npos);
+  Scene two = cooling(ThermostatKind::none);
+  two.species.push_back({"b", 1.0, 1.0, 1.0, 10000});
+  EXPECT_NE(unsupported_spread_reason(two).find("two species"), std::string::npos);
+  const SingleRank single;
+  RunOptions spread;
+  spread.spread = &single;
+  EXPECT_THROW(run_scene(two, spread), std::invalid_argument);
+}
