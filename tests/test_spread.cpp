@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "kernel/core/ranks.hpp"
+#include "kernel/collide/hard_sphere.hpp"
 #include "kernel/schemes/dispatch.hpp"
+#include "kernel/schemes/spread_dsmc.hpp"
 
 using namespace granmc;
 
@@ -80,4 +83,22 @@ TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
   RunOptions spread;
   spread.spread = &single;
   EXPECT_THROW(run_scene(two, spread), std::invalid_argument);
+}
+
+TEST(SpreadSystem, AStepNeedsAHandfulOfWaves) {
+  // The cost model of docs/scaling.md: two exchanges per wave. A particle is in about 2C/N of a step's C
+  // candidates, so chains of candidates that share particles stay short.
+  Scene s = cooling(ThermostatKind::none);
+  s.species[0].particles = 100000;
+  const SingleRank single;
+  SpreadDsmc<HardSphere> sim(s, 0, single);
+  const double t = 0.5;
+  sim.advance_to(t);
+  const double steps = t / s.run.dt;
+  const double per_step = static_cast<double>(sim.tally().candidates) / steps;
+  const double waves = static_cast<double>(sim.waves()) / steps;
+  std::printf("[ measured ] %.0f candidates per step (2C/N = %.3f), %.1f waves per step\n", per_step,
+              2.0 * per_step / 100000.0, waves);
+  EXPECT_GT(waves, 1.0);
+  EXPECT_LT(waves, 12.0);
 }

@@ -22,12 +22,13 @@
 //    (tests/test_mpi.cpp), but not the bits of schemes/dsmc.hpp, which sums over all particles at once:
 //    the two runs are two realizations of one law (tests/test_spread.cpp checks it against theory).
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "kernel/collide/impact_direction.hpp"
@@ -55,6 +56,9 @@ class SpreadDsmc {
   /// Particles per partial sum; a multiple of every batch of the stream (16).
   static constexpr std::size_t chunk = 4096;
   static constexpr double rescale_factor = 1.25;  // as schemes/dsmc.hpp
+  /// Candidates drawn and ordered at a time: a step is done segment after segment, so a rank's memory
+  /// for the candidate list stays about 90 bytes x segment whatever N and R.
+  static constexpr std::size_t segment = std::size_t{1} << 18;
 
   SpreadDsmc(const Scene& scene, std::uint64_t replica, const Ranks& ranks)
       : scene_(scene),
@@ -181,76 +185,13 @@ class SpreadDsmc {
     carried_ = wanted - whole;
     const auto count = static_cast<std::size_t>(whole);
 
-    // The candidate list and its waves, the same on every rank.
-    std::vector<std::uint64_t> k(count), l(count);
-    std::vector<std::uint32_t> wave(count);
-    std::unordered_map<std::uint64_t, std::uint32_t> latest;
-    latest.reserve(2 * count);
-    std::uint32_t waves = 0;
-    for (std::size_t s = 0; s < count; ++s) {
-      const RandomBlock w = rng_.block(RngPurpose::collision_pair, 0, state_.step, 2 * s);
-      k[s] = uniform_index(w[0], w[1], n_);
-      l[s] = uniform_index(w[2], w[3], n_ - 1);
-      l[s] += static_cast<std::uint64_t>(l[s] >= k[s]);
-      std::uint32_t& wk = latest[k[s]];
-      std::uint32_t& wl = latest[l[s]];
-      wave[s] = std::max(wk, wl) + 1;
-      wk = wl = wave[s];
-      waves = std::max(waves, wave[s]);
-    }
-    std::vector<std::size_t> start(waves + 2, 0), order(count);  // counting sort: list order within a wave
-    for (std::size_t s = 0; s < count; ++s) ++start[wave[s] + 1];
-    for (std::uint32_t w = 1; w <= waves; ++w) start[w + 1] += start[w];
-    for (std::size_t s = 0; s < count; ++s) order[start[wave[s]]++] = s;
-    for (std::uint32_t w = waves; w >= 1; --w) start[w] = start[w - 1];  // back to the first of each wave
-
-    std::vector<double> loss(count, 0.0);  // 2 (energy loss) of candidate s, filled by the owner of k
-    double counts[2] = {0.0, 0.0};         // collisions, candidates above the majorant (this rank's)
-    double above = 0.0;                    // the largest omega above the majorant
-    const int me = ranks_.rank();
-    const auto R = static_cast<std::size_t>(ranks_.size());
-    std::vector<std::vector<double>> out(R), in(R);
-    for (std::uint32_t w = 1; w <= waves; ++w) {
-      const std::size_t* first = order.data() + start[w];
-      const std::size_t* last = order.data() + start[w + 1];
-      for (auto& b : out) b.clear();
-      for (auto& b : in) b.clear();
-      for (const std::size_t* p = first; p != last; ++p) {  // partners held here for candidates done elsewhere
-        const int rk = owner(k[*p]), rl = owner(l[*p]);
-        if (rl == me && rk != me) push(out[static_cast<std::size_t>(rk)], store().velocity(l[*p] - lo_));
-        if (rk == me && rl != me) in[static_cast<std::size_t>(rl)].resize(in[static_cast<std::size_t>(rl)].size() + 3);
-      }
-      ranks_.exchange(out, in);
-      std::vector<std::size_t> read(R, 0);
-      for (auto& b : out) b.clear();
-      for (const std::size_t* p = first; p != last; ++p) {
-        const std::size_t s = *p;
-        const int rk = owner(k[s]), rl = owner(l[s]);
-        if (rk != me) continue;
-        Vec3 vk = store().velocity(k[s] - lo_);
-        Vec3 vl = rl == me ? store().velocity(l[s] - lo_) : pull(in[static_cast<std::size_t>(rl)], read[static_cast<std::size_t>(rl)]);
-        collide(s, vk, vl, loss, counts, above);
-        store().set_velocity(k[s] - lo_, vk);
-        if (rl == me) store().set_velocity(l[s] - lo_, vl);
-        else push(out[static_cast<std::size_t>(rl)], vl);
-      }
-      for (auto& b : in) b.clear();
-      for (const std::size_t* p = first; p != last; ++p) {
-        const int rk = owner(k[*p]), rl = owner(l[*p]);
-        if (rl == me && rk != me) in[static_cast<std::size_t>(rk)].resize(in[static_cast<std::size_t>(rk)].size() + 3);
-      }
-      ranks_.exchange(out, in);
-      std::fill(read.begin(), read.end(), 0);
-      for (const std::size_t* p = first; p != last; ++p) {
-        const int rk = owner(k[*p]), rl = owner(l[*p]);
-        if (rl == me && rk != me)
-          store().set_velocity(l[*p] - lo_, pull(in[static_cast<std::size_t>(rk)], read[static_cast<std::size_t>(rk)]));
-      }
-    }
-    ranks_.sum(loss);  // one nonzero per candidate: the owner's
-    ranks_.sum(counts);
     CollisionTally tally;
-    for (const double x : loss) tally.twice_energy_loss += x;  // list order, as the one-process stage
+    double counts[2] = {0.0, 0.0};  // collisions, candidates above the majorant (this rank's)
+    double above = 0.0;             // the largest omega above the majorant
+    std::uint32_t waves = 0;
+    for (std::size_t first = 0; first < count; first += segment)
+      waves += collide_segment(first, std::min(segment, count - first), tally.twice_energy_loss, counts, above);
+    ranks_.sum(counts);
     tally.candidates = count;
     tally.collisions = static_cast<std::uint64_t>(counts[0]);
     tally.majorant_updates = static_cast<std::uint64_t>(counts[1]);
@@ -270,9 +211,100 @@ class SpreadDsmc {
       rescale();
   }
 
+  /// Candidates [first, first + m) of the step: drawn, given their owners and waves (the same on every rank),
+  /// then done wave by wave. Adds their energy losses to `loss_sum` in list order (as the one-process stage
+  /// sums them); returns the number of waves.
+  std::uint32_t collide_segment(std::size_t first, std::size_t m, double& loss_sum, double (&counts)[2], double& above) {
+    k_.resize(m);
+    l_.resize(m);
+    rk_.resize(m);
+    rl_.resize(m);
+    wave_.resize(m);
+    latest_.reset(2 * m);
+    std::uint32_t waves = 0;
+    constexpr std::size_t batch = 64;
+    std::array<std::uint64_t, batch> steps, index;
+    steps.fill(state_.step);
+    for (std::size_t j0 = 0; j0 < m; j0 += batch) {
+      for (std::size_t b = 0; b < batch; ++b) index[b] = 2 * (first + j0 + b);  // block 2s (past the end: unused)
+      const RandomBlocks<batch> w = rng_.blocks(RngPurpose::collision_pair, 0, steps, index);
+      const std::size_t in_batch = std::min(batch, m - j0);
+      for (std::size_t b = 0; b < in_batch; ++b) {
+        const std::size_t j = j0 + b;
+        k_[j] = uniform_index(w.word[0][b], w.word[1][b], n_);
+        l_[j] = uniform_index(w.word[2][b], w.word[3][b], n_ - 1);
+        l_[j] += static_cast<std::uint64_t>(l_[j] >= k_[j]);
+        rk_[j] = owner(k_[j]);
+        rl_[j] = owner(l_[j]);
+        latest_.prefetch(k_[j]);  // the table is random access: its loads of a batch overlap
+        latest_.prefetch(l_[j]);
+      }
+      for (std::size_t j = j0; j < j0 + in_batch; ++j) {
+        std::uint32_t& wk = latest_[k_[j]];
+        std::uint32_t& wl = latest_[l_[j]];
+        wave_[j] = std::max(wk, wl) + 1;
+        wk = wl = wave_[j];
+        waves = std::max(waves, wave_[j]);
+      }
+    }
+    std::vector<std::size_t> start(waves + 2, 0), order(m);  // counting sort: list order within a wave
+    for (std::size_t j = 0; j < m; ++j) ++start[wave_[j] + 1];
+    for (std::uint32_t w = 1; w <= waves; ++w) start[w + 1] += start[w];
+    for (std::size_t j = 0; j < m; ++j) order[start[wave_[j]]++] = j;
+    for (std::uint32_t w = waves; w >= 1; --w) start[w] = start[w - 1];  // back to the first of each wave
+
+    std::vector<double> loss(m, 0.0);  // 2 (energy loss) of each candidate, filled by the owner of k
+    const int me = ranks_.rank();
+    const auto R = static_cast<std::size_t>(ranks_.size());
+    std::vector<std::vector<double>> out(R), in(R);
+    std::vector<std::size_t> read(R);
+    auto expect = [&](const std::size_t* from, const std::size_t* to, bool doing_k) {  // sizes both sides know
+      for (auto& b : in) b.clear();
+      for (const std::size_t* p = from; p != to; ++p) {
+        const int rk = rk_[*p], rl = rl_[*p];
+        if (doing_k && rk == me && rl != me) in[static_cast<std::size_t>(rl)].resize(in[static_cast<std::size_t>(rl)].size() + 3);
+        if (!doing_k && rl == me && rk != me) in[static_cast<std::size_t>(rk)].resize(in[static_cast<std::size_t>(rk)].size() + 3);
+      }
+      std::fill(read.begin(), read.end(), 0);
+    };
+    for (std::uint32_t w = 1; w <= waves; ++w) {
+      const std::size_t* from = order.data() + start[w];
+      const std::size_t* to = order.data() + start[w + 1];
+      for (auto& b : out) b.clear();
+      for (const std::size_t* p = from; p != to; ++p)  // partners held here for candidates done elsewhere
+        if (rl_[*p] == me && rk_[*p] != me) push(out[static_cast<std::size_t>(rk_[*p])], store().velocity(l_[*p] - lo_));
+      expect(from, to, true);
+      ranks_.exchange(out, in);
+      for (auto& b : out) b.clear();
+      constexpr std::ptrdiff_t ahead = 16;  // records prefetched this many candidates ahead
+      for (const std::size_t* p = from; p < std::min(to, from + ahead); ++p) prefetch(*p);
+      for (const std::size_t* p = from; p != to; ++p) {
+        if (to - p > ahead) prefetch(p[ahead]);
+        const std::size_t j = *p;
+        const int rk = rk_[j], rl = rl_[j];
+        if (rk != me) continue;
+        Vec3 vk = store().velocity(k_[j] - lo_);
+        Vec3 vl = rl == me ? store().velocity(l_[j] - lo_) : pull(in[static_cast<std::size_t>(rl)], read[static_cast<std::size_t>(rl)]);
+        loss[j] = collide(first + j, vk, vl, counts, above);
+        store().set_velocity(k_[j] - lo_, vk);
+        if (rl == me) store().set_velocity(l_[j] - lo_, vl);
+        else push(out[static_cast<std::size_t>(rl)], vl);
+      }
+      expect(from, to, false);
+      ranks_.exchange(out, in);
+      for (const std::size_t* p = from; p != to; ++p)
+        if (rl_[*p] == me && rk_[*p] != me)
+          store().set_velocity(l_[*p] - lo_, pull(in[static_cast<std::size_t>(rk_[*p])], read[static_cast<std::size_t>(rk_[*p])]));
+    }
+    ranks_.sum(loss);  // one nonzero per candidate: the owner's
+    for (const double x : loss) loss_sum += x;
+    return waves;
+  }
+
   /// Candidate s on its two velocities: schemes/collision_stage.hpp's acceptance on the mean over sigma-hat,
   /// then sigma-hat given the collision, against the step's majorant.
-  void collide(std::size_t s, Vec3& vk, Vec3& vl, std::vector<double>& loss, double (&counts)[2], double& above) const {
+  /// Returns 2 (energy loss), 0 without a collision.
+  double collide(std::size_t s, Vec3& vk, Vec3& vl, double (&counts)[2], double& above) const {
     const RandomBlock w = rng_.block(RngPurpose::collision_pair, 0, state_.step, 2 * s + 1);
     const Vec3 g = vk - vl;
     const double g2 = norm2(g);
@@ -281,13 +313,20 @@ class SpreadDsmc {
       above = std::max(above, omega);
       counts[1] += 1.0;
     } else if (uniform_open(w[2]) * omega_max_ > omega) {
-      return;
+      return 0.0;
     }
     const ImpactDirection d = impact_direction(g, std::sqrt(g2), unit_vector(uniform_open(w[0]), uniform_open(w[1])));
-    if (!(d.g_sigma > 0.0)) return;
+    if (!(d.g_sigma > 0.0)) return 0.0;
     inelastic_collision(vk, vl, d.sigma, d.g_sigma, pair_);
-    loss[s] = 2.0 * pair_.energy_loss * d.g_sigma * d.g_sigma;
     counts[0] += 1.0;
+    return 2.0 * pair_.energy_loss * d.g_sigma * d.g_sigma;
+  }
+
+  /// Hint that candidate j's records held here will be read soon.
+  void prefetch(std::size_t j) noexcept {
+    const int me = ranks_.rank();
+    if (rk_[j] == me) store().prefetch(k_[j] - lo_);
+    if (rl_[j] == me) store().prefetch(l_[j] - lo_);
   }
 
   static void push(std::vector<double>& b, const Vec3& v) { b.insert(b.end(), {v.x, v.y, v.z}); }
@@ -313,6 +352,39 @@ class SpreadDsmc {
     ++rescales_;
   }
 
+  /// The latest wave of each particle of the step's candidates: open addressing over the particle index,
+  /// at most half full, cleared every step (a std::unordered_map here took most of the stage's time).
+  class LatestWave {
+   public:
+    void reset(std::size_t keys) {
+      std::size_t slots = 16;
+      while (slots < 2 * keys) slots *= 2;
+      shift_ = 64 - static_cast<unsigned>(std::countr_zero(slots));
+      key_.assign(slots, empty);
+      wave_.assign(slots, 0);
+    }
+    void prefetch(std::uint64_t k) const noexcept {
+      __builtin_prefetch(&key_[home(k)], 1, 3);
+      __builtin_prefetch(&wave_[home(k)], 1, 3);
+    }
+    /// The slot of particle k (0 if new).
+    std::uint32_t& operator[](std::uint64_t k) noexcept {
+      std::size_t at = home(k);
+      while (key_[at] != k && key_[at] != empty) at = (at + 1) & (key_.size() - 1);
+      key_[at] = k;
+      return wave_[at];
+    }
+
+   private:
+    [[nodiscard]] std::size_t home(std::uint64_t k) const noexcept {
+      return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);
+    }
+    static constexpr std::uint64_t empty = ~std::uint64_t{0};
+    std::vector<std::uint64_t> key_;
+    std::vector<std::uint32_t> wave_;
+    unsigned shift_ = 60;
+  };
+
   const Scene& scene_;
   const Ranks& ranks_;
   RandomStream rng_;
@@ -331,6 +403,11 @@ class SpreadDsmc {
   double momentum_removed_ = 0.0;
   std::uint64_t rescales_ = 0;
   std::uint64_t waves_ = 0;
+  // A segment's candidates (kept to reuse their memory): particles, owners, waves.
+  std::vector<std::uint64_t> k_, l_;
+  std::vector<int> rk_, rl_;
+  std::vector<std::uint32_t> wave_;
+  LatestWave latest_;
 };
 
 /// One replica from t = 0 to t_end over `ranks`, observed at the sample times (every rank returns it).
