@@ -63,6 +63,8 @@ class SpreadDsmc {
   SpreadDsmc(const Scene& scene, std::uint64_t replica, const Ranks& ranks)
       : scene_(scene),
         ranks_(ranks),
+        me_(ranks.rank()),
+        size_(ranks.size()),
         rng_(scene.run.seed, replica),
         kernel_(Kernel::from_scene(scene)),
         pair_(pair_coefficients(scene).at(0)),
@@ -71,7 +73,7 @@ class SpreadDsmc {
     if (scene.species.size() != 1) throw std::invalid_argument("a system spread over ranks has one species");
     if (n_ < 2) throw std::invalid_argument("a system spread over ranks needs at least two particles");
     chunks_ = (n_ + chunk - 1) / chunk;
-    const auto r = static_cast<std::size_t>(ranks.rank()), size = static_cast<std::size_t>(ranks.size());
+    const auto r = static_cast<std::size_t>(me_), size = static_cast<std::size_t>(size_);
     first_chunk_ = chunks_ * r / size;
     lo_ = std::min(n_, first_chunk_ * chunk);
     hi_ = std::min(n_, chunks_ * (r + 1) / size * chunk);
@@ -138,7 +140,7 @@ class SpreadDsmc {
   SpeciesStore& store() noexcept { return state_.species[0]; }
   [[nodiscard]] int owner(std::uint64_t k) const noexcept {
     // the rank whose chunks hold k: the largest r with floor(chunks r / R) <= k / chunk
-    const std::uint64_t c = k / chunk, size = static_cast<std::uint64_t>(ranks_.size());
+    const std::uint64_t c = k / chunk, size = static_cast<std::uint64_t>(size_);
     std::uint64_t r = (c * size) / chunks_;
     while (r + 1 < size && chunks_ * (r + 1) / size <= c) ++r;
     while (chunks_ * r / size > c) --r;
@@ -254,8 +256,8 @@ class SpreadDsmc {
     for (std::uint32_t w = waves; w >= 1; --w) start[w] = start[w - 1];  // back to the first of each wave
 
     std::vector<double> loss(m, 0.0);  // 2 (energy loss) of each candidate, filled by the owner of k
-    const int me = ranks_.rank();
-    const auto R = static_cast<std::size_t>(ranks_.size());
+    const int me = me_;
+    const auto R = static_cast<std::size_t>(size_);
     std::vector<std::vector<double>> out(R), in(R);
     std::vector<std::size_t> read(R);
     auto expect = [&](const std::size_t* from, const std::size_t* to, bool doing_k) {  // sizes both sides know
@@ -324,7 +326,7 @@ class SpreadDsmc {
 
   /// Hint that candidate j's records held here will be read soon.
   void prefetch(std::size_t j) noexcept {
-    const int me = ranks_.rank();
+    const int me = me_;
     if (rk_[j] == me) store().prefetch(k_[j] - lo_);
     if (rl_[j] == me) store().prefetch(l_[j] - lo_);
   }
@@ -387,6 +389,7 @@ class SpreadDsmc {
 
   const Scene& scene_;
   const Ranks& ranks_;
+  int me_, size_;  // this rank and the number of ranks
   RandomStream rng_;
   Kernel kernel_;
   PairCoefficients pair_;
