@@ -405,6 +405,46 @@ histogram = { shells = 20, radius = 5.0 }
   expect_identical_runs(ways(true), {"/temperature/replicas", "/intruder/velocity", "/intruder/speed_counts"});
 }
 
+/// `granmc sweep` under mpirun (docs/scaling.md, "Over MPI ranks"): the same index and, scene by scene, the
+/// same files as one process; only rank 0 writes; a rerun skips every scene.
+TEST_F(MpiRun, SweepOverRanksMatchesOneProcessAndResumes) {
+  write("base.toml", cooling_scene);
+  write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.6, 0.8]\nrun.seed = [1, 2]\n");
+  const Outcome one = granmc("sweep alpha.toml --out-dir one --threads 1 --quiet");
+  ASSERT_EQ(one.status, 0) << one.stdout_text << one.stderr_text;
+  const Outcome two = granmc("sweep alpha.toml --out-dir two --threads 1", mpirun(2));
+  ASSERT_EQ(two.status, 0) << two.stdout_text << two.stderr_text;
+  EXPECT_EQ(std::count(two.stdout_text.begin(), two.stdout_text.end(), '\n'), 5) << "4 scene lines and 1 closing line, "
+                                                                                    "from rank 0 alone:\n" << two.stdout_text;
+  const nlohmann::json index = nlohmann::json::parse(slurp(dir_ / "one" / "index.json"));
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / "two" / "index.json")), index);
+  ASSERT_EQ(index["scenes"].size(), 4u);
+  std::vector<std::string> expected{"index.json"};
+  for (const auto& scene : index["scenes"]) {
+    const std::string name = scene["name"];
+    SCOPED_TRACE(name);
+    EXPECT_EQ(scene["status"], "done");
+    expected.insert(expected.end(), {name + ".h5", name + ".json"});
+    const auto a = read_h5((dir_ / "one" / (name + ".h5")).string());
+    const auto b = read_h5((dir_ / "two" / (name + ".h5")).string());
+    EXPECT_FALSE(a.empty());
+    EXPECT_TRUE(a == b) << "the HDF5 files differ";
+    EXPECT_EQ(summary("two/" + name), summary("one/" + name));
+  }
+  std::vector<std::string> written;
+  for (const auto& e : fs::directory_iterator(dir_ / "two")) written.push_back(e.path().filename().string());
+  std::sort(written.begin(), written.end());
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(written, expected) << "only rank 0 writes, and only the sweep's files";
+  const Outcome again = granmc("sweep alpha.toml --out-dir two --threads 1", mpirun(2));
+  ASSERT_EQ(again.status, 0) << again.stderr_text;
+  std::size_t skipped = 0;
+  for (std::size_t at = again.stdout_text.find("skipped:"); at != std::string::npos;
+       at = again.stdout_text.find("skipped:", at + 1))
+    ++skipped;
+  EXPECT_EQ(skipped, 4u) << again.stdout_text;
+}
+
 TEST_F(MpiRun, BadSceneStopsEveryRankWithOneMessage) {
   write("scene.toml", cooling_scene + "[shear]\nrate = \"fast\"\n");
   const Outcome o = granmc("run scene.toml --out bad.h5", mpirun(2));
