@@ -12,6 +12,10 @@ namespace granmc::mpi {
 
 namespace {
 
+/// The communicator of the run's collectives: the world, or this rank's group while a RankGroups lives.
+MPI_Comm run_communicator = MPI_COMM_WORLD;
+MPI_Comm run_comm() { return run_communicator; }
+
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_trivially_copyable_v<Vec3>);
 static_assert(sizeof(SymTensor) == 6 * sizeof(double) && std::is_trivially_copyable_v<SymTensor>);
 #if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
@@ -177,9 +181,29 @@ Session::~Session() { MPI_Finalize(); }
 
 World world() {
   World w;
-  MPI_Comm_rank(MPI_COMM_WORLD, &w.rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &w.size);
+  MPI_Comm_rank(run_comm(), &w.rank);
+  MPI_Comm_size(run_comm(), &w.size);
   return w;
+}
+
+RankGroups::RankGroups(int groups) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  group_ = static_cast<int>(static_cast<long long>(rank) * groups / size);  // consecutive ranks
+  MPI_Comm group;
+  check(MPI_Comm_split(MPI_COMM_WORLD, group_, rank, &group), "MPI_Comm_split");
+  run_communicator = group;
+}
+
+RankGroups::~RankGroups() {
+  MPI_Comm group = run_communicator;
+  run_communicator = MPI_COMM_WORLD;
+  MPI_Comm_free(&group);
+}
+
+void world_max(std::span<int> values) {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
 }
 
 int WorldRanks::rank() const noexcept { return world().rank; }
@@ -188,12 +212,12 @@ int WorldRanks::size() const noexcept { return world().size; }
 void WorldRanks::sum(std::span<double> values) const {
   if (values.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw std::runtime_error("spread system: a sum of more than 2^31 values");
-  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, run_comm());
 }
 
 double WorldRanks::max(double value) const {
   double m = value;
-  MPI_Allreduce(&value, &m, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(&value, &m, 1, MPI_DOUBLE, MPI_MAX, run_comm());
   return m;
 }
 
@@ -213,20 +237,20 @@ void WorldRanks::exchange(const std::vector<std::vector<double>>& send, std::vec
       in.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw std::runtime_error("spread system: an exchange of more than 2^31 values");
   MPI_Alltoallv(out.data(), send_counts.data(), send_at.data(), MPI_DOUBLE, in.data(), receive_counts.data(),
-                receive_at.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+                receive_at.data(), MPI_DOUBLE, run_comm());
   for (std::size_t r = 0; r < ranks; ++r)
     std::copy(in.begin() + receive_at[r], in.begin() + receive_at[r] + receive_counts[r], receive[r].begin());
 }
 
 bool all_ok(bool ok_here) {
   int ok = ok_here ? 1 : 0, all = 0;
-  MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, run_comm());
   return all == 1;
 }
 
 bool root_ok(bool ok_here) {
   int ok = ok_here ? 1 : 0;
-  MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  MPI_Bcast(&ok, 1, MPI_INT, 0, run_comm());
   return ok == 1;
 }
 
@@ -242,11 +266,11 @@ RunResult gather_replicas(RunResult local) {
   if (w.rank != 0) local.replicas.clear();
   const auto my_size = static_cast<std::uint64_t>(mine.size());
   std::vector<std::uint64_t> sizes(w.rank == 0 ? static_cast<std::size_t>(w.size) : 0);
-  check(MPI_Gather(&my_size, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "MPI_Gather");
+  check(MPI_Gather(&my_size, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, 0, run_comm()), "MPI_Gather");
   if (w.rank != 0) {
     for (std::size_t at = 0; at < mine.size(); at += chunk_bytes) {
       const std::size_t n = std::min(chunk_bytes, mine.size() - at);
-      check(MPI_Send(mine.data() + at, static_cast<int>(n), MPI_BYTE, 0, tag_replicas, MPI_COMM_WORLD), "MPI_Send");
+      check(MPI_Send(mine.data() + at, static_cast<int>(n), MPI_BYTE, 0, tag_replicas, run_comm()), "MPI_Send");
     }
     return local;
   }
@@ -255,7 +279,7 @@ RunResult gather_replicas(RunResult local) {
     for (std::size_t at = 0; at < bytes.size(); at += chunk_bytes) {
       const std::size_t n = std::min(chunk_bytes, bytes.size() - at);
       MPI_Status status;
-      check(MPI_Recv(bytes.data() + at, static_cast<int>(n), MPI_BYTE, k, tag_replicas, MPI_COMM_WORLD, &status),
+      check(MPI_Recv(bytes.data() + at, static_cast<int>(n), MPI_BYTE, k, tag_replicas, run_comm(), &status),
             "MPI_Recv");
       int received = 0;
       check(MPI_Get_count(&status, MPI_BYTE, &received), "MPI_Get_count");

@@ -110,14 +110,34 @@ class Session {
   Session& operator=(const Session&) = delete;
 };
 
+/// This rank and the number of ranks of the run: MPI_COMM_WORLD, or this rank's group while a RankGroups
+/// lives. Every collective below (but abort_all) acts on the same ranks.
 World world();
+
+/// Splits the world into `groups` groups of consecutive ranks (collective over the world); while it lives,
+/// the run's collectives act within this rank's group, so that a sweep can give whole scenes to groups.
+class RankGroups {
+ public:
+  explicit RankGroups(int groups);
+  ~RankGroups();
+  RankGroups(const RankGroups&) = delete;
+  RankGroups& operator=(const RankGroups&) = delete;
+  /// This rank's group, 0 .. groups - 1.
+  [[nodiscard]] int group() const noexcept { return group_; }
+
+ private:
+  int group_ = 0;
+};
+
+/// Element-wise maximum over every rank of the world, whatever RankGroups is in force (collective).
+void world_max(std::span<int> values);
 
 /// True on every rank when `ok_here` is true on every rank (collective).
 bool all_ok(bool ok_here);
 /// True on every rank when rank 0's `ok_here` was true (collective).
 bool root_ok(bool ok_here);
 
-/// The ranks of MPI_COMM_WORLD as kernel/core/ranks.hpp's collectives (one system over several ranks).
+/// The ranks of the run (world() above) as kernel/core/ranks.hpp's collectives (one system over several ranks).
 class WorldRanks final : public Ranks {
  public:
   [[nodiscard]] int rank() const noexcept override;

@@ -1,5 +1,6 @@
 #include "drivers/sweep.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -20,6 +21,9 @@
 #include "io/sweep_file.hpp"
 #include "granmc/version.hpp"
 #include "kernel/schemes/dispatch.hpp"
+#ifdef GRANMC_HAVE_MPI
+#include "drivers/mpi_replicas.hpp"
+#endif
 
 namespace granmc {
 
@@ -110,6 +114,40 @@ nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, con
   return {{"sweep", sweep_path}, {"base", sweep.base_path}, {"version", version}, {"scenes", scenes}};
 }
 
+#ifdef GRANMC_HAVE_MPI
+/// The scenes not done, whole scenes on `groups` groups of consecutive ranks (each scene's replicas over
+/// its group, as `granmc run` spreads them): in round r, group g runs the (r groups + g)-th scene left.
+/// After each round every rank learns which scenes are done, and world rank 0 rewrites the index.
+void run_in_groups(const SweepArgs& args, const Sweep& sweep, const fs::path& dir, const std::vector<std::string>& hashes,
+                   std::vector<bool>& done, int groups, bool world_root) {
+  std::vector<std::size_t> todo;
+  for (std::size_t k = 0; k < done.size(); ++k)
+    if (!done[k]) todo.push_back(k);
+  const mpi::RankGroups scope(groups);
+  const Place in_group = place();
+  for (std::size_t first = 0; first < todo.size(); first += static_cast<std::size_t>(groups)) {
+    std::vector<int> finished(done.size(), 0);
+    if (const std::size_t at = first + static_cast<std::size_t>(scope.group()); at < todo.size()) {
+      const std::size_t k = todo[at];
+      const SweepScene& s = sweep.scenes[k];
+      const auto start = std::chrono::steady_clock::now();
+      run_job(s.scene, {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads, args.quiet);
+      finished[k] = 1;
+      if (in_group.rank == 0 && !args.quiet) {
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::printf("granmc sweep: scene %zu of %zu (%s) done in %.1f s by rank group %d of %d (%d ranks)\n", k + 1,
+                    done.size(), s.name.c_str(), seconds, scope.group() + 1, groups, in_group.size);
+        std::fflush(stdout);
+      }
+    }
+    mpi::world_max(finished);
+    for (std::size_t k = 0; k < done.size(); ++k)
+      if (finished[k] != 0) done[k] = true;
+    if (world_root) write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, done));
+  }
+}
+#endif
+
 std::string plural(std::size_t n, const char* word) {
   return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
@@ -161,6 +199,16 @@ int sweep_command(const SweepArgs& args) {
     for (std::size_t k = 0; k < count; ++k) to_run += done[k] ? 0 : 1;
     std::size_t ran = 0;
     double spent = 0.0;
+    // More ranks than the largest scene has replicas would leave ranks idle: then whole scenes go to groups
+    // of ranks (docs/scaling.md, "Over MPI ranks").
+    int most_replicas = 1;
+    for (std::size_t k = 0; k < count; ++k)
+      if (!done[k]) most_replicas = std::max(most_replicas, sweep.scenes[k].scene.run.replicas);
+    const int groups = static_cast<int>(std::min<std::size_t>(std::max<std::size_t>(to_run, 1),
+                                                              static_cast<std::size_t>(std::max(1, at.size / most_replicas))));
+#ifdef GRANMC_HAVE_MPI
+    if (groups > 1) run_in_groups(args, sweep, dir, hashes, done, groups, at.rank == 0);
+#endif
     for (std::size_t k = 0; k < count; ++k) {
       if (done[k]) continue;
       const SweepScene& s = sweep.scenes[k];
@@ -181,7 +229,8 @@ int sweep_command(const SweepArgs& args) {
     }
     if (talk) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
-      const std::string where = at.size == 1 ? "" : " on " + std::to_string(at.size) + " MPI ranks";
+      std::string where = at.size == 1 ? "" : " on " + std::to_string(at.size) + " MPI ranks";
+      if (groups > 1) where += " in " + std::to_string(groups) + " groups";
       std::printf("granmc %s: %s, %s (%zu run, %zu skipped) in %.1f s%s -> %s\n", version, args.sweep.c_str(),
                   plural(count, "scene").c_str(), to_run, count - to_run, wall, where.c_str(),
                   (dir / index_name).c_str());

@@ -235,6 +235,31 @@ class MpiRun : public granmc_test::GranmcDirectory {
     }
   }
 
+  /// Two sweep directories hold the same index (every scene done) and, scene by scene, bit-identical HDF5
+  /// files and equal summaries; `other` holds nothing else.
+  void expect_same_sweep(const std::string& reference, const std::string& other, std::size_t scenes) {
+    const nlohmann::json index = nlohmann::json::parse(slurp(dir_ / reference / "index.json"));
+    EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / other / "index.json")), index);
+    ASSERT_EQ(index["scenes"].size(), scenes);
+    std::vector<std::string> expected{"index.json"};
+    for (const auto& scene : index["scenes"]) {
+      const std::string name = scene["name"];
+      SCOPED_TRACE(name);
+      EXPECT_EQ(scene["status"], "done");
+      expected.insert(expected.end(), {name + ".h5", name + ".json"});
+      const auto a = read_h5((dir_ / reference / (name + ".h5")).string());
+      const auto b = read_h5((dir_ / other / (name + ".h5")).string());
+      EXPECT_FALSE(a.empty());
+      EXPECT_TRUE(a == b) << "the HDF5 files differ";
+      EXPECT_EQ(summary(other + "/" + name), summary(reference + "/" + name));
+    }
+    std::vector<std::string> written;
+    for (const auto& e : fs::directory_iterator(dir_ / other)) written.push_back(e.path().filename().string());
+    std::sort(written.begin(), written.end());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(written, expected) << "only the sweep's files, written once";
+  }
+
   /// The JSON summary without what may differ between runs of the same seed.
   nlohmann::json summary(const std::string& stem) const {
     nlohmann::json j = nlohmann::json::parse(slurp(dir_ / (stem + ".json")));
@@ -416,26 +441,7 @@ TEST_F(MpiRun, SweepOverRanksMatchesOneProcessAndResumes) {
   ASSERT_EQ(two.status, 0) << two.stdout_text << two.stderr_text;
   EXPECT_EQ(std::count(two.stdout_text.begin(), two.stdout_text.end(), '\n'), 5) << "4 scene lines and 1 closing line, "
                                                                                     "from rank 0 alone:\n" << two.stdout_text;
-  const nlohmann::json index = nlohmann::json::parse(slurp(dir_ / "one" / "index.json"));
-  EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / "two" / "index.json")), index);
-  ASSERT_EQ(index["scenes"].size(), 4u);
-  std::vector<std::string> expected{"index.json"};
-  for (const auto& scene : index["scenes"]) {
-    const std::string name = scene["name"];
-    SCOPED_TRACE(name);
-    EXPECT_EQ(scene["status"], "done");
-    expected.insert(expected.end(), {name + ".h5", name + ".json"});
-    const auto a = read_h5((dir_ / "one" / (name + ".h5")).string());
-    const auto b = read_h5((dir_ / "two" / (name + ".h5")).string());
-    EXPECT_FALSE(a.empty());
-    EXPECT_TRUE(a == b) << "the HDF5 files differ";
-    EXPECT_EQ(summary("two/" + name), summary("one/" + name));
-  }
-  std::vector<std::string> written;
-  for (const auto& e : fs::directory_iterator(dir_ / "two")) written.push_back(e.path().filename().string());
-  std::sort(written.begin(), written.end());
-  std::sort(expected.begin(), expected.end());
-  EXPECT_EQ(written, expected) << "only rank 0 writes, and only the sweep's files";
+  expect_same_sweep("one", "two", 4);
   const Outcome again = granmc("sweep alpha.toml --out-dir two --threads 1", mpirun(2));
   ASSERT_EQ(again.status, 0) << again.stderr_text;
   std::size_t skipped = 0;
@@ -443,6 +449,24 @@ TEST_F(MpiRun, SweepOverRanksMatchesOneProcessAndResumes) {
        at = again.stdout_text.find("skipped:", at + 1))
     ++skipped;
   EXPECT_EQ(skipped, 4u) << again.stdout_text;
+}
+
+/// More ranks than a scene has replicas: 4 ranks and scenes of 2 replicas make 2 groups of 2 ranks, each
+/// running whole scenes (docs/scaling.md); the files are those of one process.
+TEST_F(MpiRun, SweepGivesWholeScenesToGroupsOfRanks) {
+  std::string base = cooling_scene;
+  base.replace(base.find("replicas = 5"), 12, "replicas = 2");
+  write("base.toml", base);
+  write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.5, 0.6, 0.8]\nrun.seed = [1, 2]\n");
+  const Outcome one = granmc("sweep alpha.toml --out-dir one --threads 1 --quiet");
+  ASSERT_EQ(one.status, 0) << one.stdout_text << one.stderr_text;
+  const Outcome four = granmc("sweep alpha.toml --out-dir four --threads 1", mpirun(4));
+  ASSERT_EQ(four.status, 0) << four.stdout_text << four.stderr_text;
+  EXPECT_NE(four.stdout_text.find("on 4 MPI ranks in 2 groups"), std::string::npos) << four.stdout_text;
+  EXPECT_NE(four.stdout_text.find("by rank group 2 of 2 (2 ranks)"), std::string::npos) << four.stdout_text;
+  EXPECT_EQ(std::count(four.stdout_text.begin(), four.stdout_text.end(), '\n'), 7) << "6 scene lines, 1 closing line\n"
+                                                                                     << four.stdout_text;
+  expect_same_sweep("one", "four", 6);
 }
 
 TEST_F(MpiRun, BadSceneStopsEveryRankWithOneMessage) {
