@@ -17,7 +17,9 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <span>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "drivers/mpi_replicas.hpp"
@@ -354,6 +356,16 @@ class MpiRun : public granmc_test::GranmcDirectory {
   }
 };
 
+/// `text` with each (from, to) replaced once; throws if a `from` does not occur.
+std::string edited(std::string text, std::initializer_list<std::pair<std::string, std::string>> edits) {
+  for (const auto& [from, to] : edits) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw std::invalid_argument("edited: no \"" + from + "\" in the scene");
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
 /// A monodisperse hard-sphere cooling state: 5 replicas of 2000 particles, t_end 1, dt 0.01, 10 samples.
 const std::string cooling_scene = R"([run]
 method = "dsmc"
@@ -383,30 +395,20 @@ TEST_F(MpiRun, ShearWithGaussianThermostatIsBitIdentical) {
 
 /// One system over the ranks (--spread particles, schemes/spread_dsmc.hpp): 20000 particles are 5 chunks of
 /// 4096, so 2 and 3 ranks split them unevenly and 6 ranks leave one rank without particles.
-const std::string spread_scene = R"([run]
-method = "dsmc"
-seed = 1
-replicas = 2
-t_end = 2.0
-dt = 0.01
-samples = 10
-[[species]]
-particles = 20000
-[collision]
-kernel = "hard-sphere"
-restitution = 0.7
-[output]
-histogram = { shells = 16, radius = 4.0 }
-)";
+std::string spread_scene() {
+  return edited(cooling_scene, {{"replicas = 5", "replicas = 2"}, {"t_end = 1.0", "t_end = 2.0"},
+                                {"particles = 2000", "particles = 20000"}, {"restitution = 0.8", "restitution = 0.7"}}) +
+         "[output]\nhistogram = { shells = 16, radius = 4.0 }\n";
+}
 
 TEST_F(MpiRun, OneSystemOverRanksIsBitIdentical) {
-  write("scene.toml", spread_scene);
+  write("scene.toml", spread_scene());
   expect_identical_runs(ways(false), {"/temperature/replicas", "/species/a/speed_distribution/counts", "/counters/candidates"},
                         " --spread particles");
 }
 
 TEST_F(MpiRun, OneSystemOverRanksWithGaussianThermostatIsBitIdentical) {
-  write("scene.toml", spread_scene + "[thermostat]\nkind = \"gaussian\"\n");
+  write("scene.toml", spread_scene() + "[thermostat]\nkind = \"gaussian\"\n");
   expect_identical_runs(ways(true), {"/temperature/replicas"}, " --spread particles");
 }
 
@@ -454,9 +456,7 @@ TEST_F(MpiRun, SweepOverRanksMatchesOneProcessAndResumes) {
 /// More ranks than a scene has replicas: 4 ranks and scenes of 2 replicas make 2 groups of 2 ranks, each
 /// running whole scenes (docs/scaling.md); the files are those of one process.
 TEST_F(MpiRun, SweepGivesWholeScenesToGroupsOfRanks) {
-  std::string base = cooling_scene;
-  base.replace(base.find("replicas = 5"), 12, "replicas = 2");
-  write("base.toml", base);
+  write("base.toml", edited(cooling_scene, {{"replicas = 5", "replicas = 2"}}));
   write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.5, 0.6, 0.8]\nrun.seed = [1, 2]\n");
   const Outcome one = granmc("sweep alpha.toml --out-dir one --threads 1 --quiet");
   ASSERT_EQ(one.status, 0) << one.stdout_text << one.stderr_text;
