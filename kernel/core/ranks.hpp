@@ -14,7 +14,8 @@ class Ranks {
   [[nodiscard]] virtual int rank() const noexcept = 0;
   [[nodiscard]] virtual int size() const noexcept = 0;
   /// Element-wise sum over the ranks, the result on every rank. The callers give every element one
-  /// nonzero contribution at most, so the sum is exact and independent of the reduction order.
+  /// nonzero contribution at most, or whole numbers (histogram counts), so the sum is exact and
+  /// independent of the reduction order.
   virtual void sum(std::span<double> values) const = 0;
   /// The largest value over the ranks, on every rank.
   [[nodiscard]] virtual double max(double value) const = 0;

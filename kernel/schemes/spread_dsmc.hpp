@@ -19,8 +19,9 @@
 //    approximation, counted in majorant_updates.
 //  - Sums over particles are compensated per chunk and then over the chunks in order; the energy loss of
 //    a step is summed over the candidates in list order. Both are the same bits for any number of ranks
-//    (tests/test_mpi.cpp), but not the bits of schemes/dsmc.hpp, which sums over all particles at once:
-//    the two runs are two realizations of one law (tests/test_spread.cpp checks it against theory).
+//    (tests/test_mpi.cpp), but not the bits of schemes/dsmc.hpp, which sums over all particles at once.
+//    The velocities then differ in their last bits only, so both stages make the same collisions unless
+//    a rounding flips an acceptance (tests/test_spread.cpp: the same collisions over a 25-fold cooling).
 #include <algorithm>
 #include <array>
 #include <bit>
