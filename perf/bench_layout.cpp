@@ -1,6 +1,7 @@
 // The measurement that decides the velocity layout of SpeciesStore (DESIGN.md, Particles): random pair
 // gather + scatter, as the collision stage does it, with one array per component (SoA: x[], y[], z[])
-// against packed 32-byte records (x, y, z, aux), at N = 10^5 (fits in L2 + L3) and N = 10^7 (does not).
+// against packed 32-byte records (x, y, z, aux), at N = 10^5 (fits in L2 + L3) and N = 10^7 (does not);
+// and, with prefetch, packed 16-byte float records (run.storage = "float") against the double ones.
 //
 // The pairs, the packed layout and the two loops are perf/gather_scatter_limit.hpp's (the packed layout
 // with prefetch is the limit kernel bench_collisions runs beside the collision stage). Both layouts use
@@ -88,16 +89,17 @@ void print_ratio_table(const granmc::perf::RecordingReporter& rep) {
   std::printf("\nRandom pair gather + scatter, %llu pairs per iteration (median of the repetitions)\n",
               static_cast<unsigned long long>(kPairsPerIteration));
   std::printf("| N | SoA pairs/s | packed pairs/s | packed / SoA | SoA+prefetch pairs/s | "
-              "packed+prefetch pairs/s | packed+prefetch / packed |\n");
-  std::printf("|---|---|---|---|---|---|---|\n");
+              "packed+prefetch pairs/s | packed+prefetch / packed | float packed+prefetch pairs/s | float / double |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   const auto soa_runs = rep.counters.find("layout_soa");
   if (soa_runs == rep.counters.end()) return;
   for (const auto& [args, unused] : soa_runs->second) {
     const auto get = [&](const char* name) { return rep.value(name, args, "pairs/s"); };
     const double soa = get("layout_soa"), packed = get("layout_packed");
     const double soa_p = get("layout_soa_prefetch"), packed_p = get("layout_packed_prefetch");
-    std::printf("| %s | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f |\n", args.c_str(), soa, packed, packed / soa,
-                soa_p, packed_p, packed_p / packed);
+    const double float_p = get("layout_packed_float_prefetch");
+    std::printf("| %s | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f | %.3g | %.2f |\n", args.c_str(), soa, packed,
+                packed / soa, soa_p, packed_p, packed_p / packed, float_p, float_p / packed_p);
   }
 }
 
@@ -115,6 +117,9 @@ int main(int argc, char** argv) {
         ->Arg(n)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("layout_packed_prefetch", layout_pairs<PackedLayout, true>)
+        ->Arg(n)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("layout_packed_float_prefetch", layout_pairs<PackedFloatLayout, true>)
         ->Arg(n)
         ->Unit(benchmark::kMillisecond);
   }

@@ -60,20 +60,23 @@ inline double initial_value(SplitMix64& gen) noexcept {
   return static_cast<double>(gen.next() >> 11) * 0x1p-52 - 1.0;  // uniform on [-1, 1)
 }
 
-struct PackedLayout {
-  struct alignas(32) Record {
-    double v[3];
-    double aux;
+/// Packed records (x, y, z, aux) of Real: 32 bytes for double (SpeciesStore), 16 for float
+/// (FloatSpeciesStore, run.storage = "float"); the arithmetic is in double either way, as granmc's.
+template <class Real>
+struct BasicPackedLayout {
+  struct alignas(4 * sizeof(Real)) Record {
+    Real v[3];
+    Real aux;
   };
-  static_assert(sizeof(Record) == 32);
+  static_assert(sizeof(Record) == 4 * sizeof(Real));
 
-  explicit PackedLayout(std::size_t n) : r(n) {
+  explicit BasicPackedLayout(std::size_t n) : r(n) {
     SplitMix64 gen{1};
     for (std::size_t k = 0; k < n; ++k) {
-      r[k].v[0] = initial_value(gen);
-      r[k].v[1] = initial_value(gen);
-      r[k].v[2] = initial_value(gen);
-      r[k].aux = 0.0;
+      r[k].v[0] = static_cast<Real>(initial_value(gen));
+      r[k].v[1] = static_cast<Real>(initial_value(gen));
+      r[k].v[2] = static_cast<Real>(initial_value(gen));
+      r[k].aux = 0;
     }
   }
   std::size_t size() const noexcept { return r.size(); }
@@ -81,17 +84,19 @@ struct PackedLayout {
   void collide(std::uint64_t k, std::uint64_t l, const Direction& s) noexcept {
     Record& a = r[k];
     Record& b = r[l];
-    const double gx = a.v[0] - b.v[0], gy = a.v[1] - b.v[1], gz = a.v[2] - b.v[2];
-    const double gs = gx * s.x + gy * s.y + gz * s.z;
-    a.v[0] -= gs * s.x;
-    a.v[1] -= gs * s.y;
-    a.v[2] -= gs * s.z;
-    b.v[0] += gs * s.x;
-    b.v[1] += gs * s.y;
-    b.v[2] += gs * s.z;
+    const double ax = a.v[0], ay = a.v[1], az = a.v[2], bx = b.v[0], by = b.v[1], bz = b.v[2];
+    const double gs = (ax - bx) * s.x + (ay - by) * s.y + (az - bz) * s.z;
+    a.v[0] = static_cast<Real>(ax - gs * s.x);
+    a.v[1] = static_cast<Real>(ay - gs * s.y);
+    a.v[2] = static_cast<Real>(az - gs * s.z);
+    b.v[0] = static_cast<Real>(bx + gs * s.x);
+    b.v[1] = static_cast<Real>(by + gs * s.y);
+    b.v[2] = static_cast<Real>(bz + gs * s.z);
   }
   AlignedBuffer<Record> r;
 };
+using PackedLayout = BasicPackedLayout<double>;
+using PackedFloatLayout = BasicPackedLayout<float>;
 
 template <class Layout>
 void run_pairs(Layout& lay, SplitMix64& gen, std::uint64_t pairs) noexcept {
