@@ -138,6 +138,13 @@ class SpreadDsmc {
   }
 
  private:
+  /// A candidate in wave order: its particles, their ranks, and j, its position in the segment's list.
+  struct Queued {
+    std::uint64_t k, l;
+    int rk, rl;
+    std::size_t j;
+  };
+
   SpeciesStore& store() noexcept { return state_.species[0]; }
   [[nodiscard]] int owner(std::uint64_t k) const noexcept {
     // the rank whose chunks hold k: the largest r with floor(chunks r / R) <= k / chunk
@@ -250,10 +257,13 @@ class SpreadDsmc {
         waves = std::max(waves, wave_[j]);
       }
     }
-    std::vector<std::size_t> start(waves + 2, 0), order(m);  // counting sort: list order within a wave
+    // Counting sort into wave order (list order within a wave), copied into one array that the passes
+    // below read front to back.
+    std::vector<std::size_t> start(waves + 2, 0);
     for (std::size_t j = 0; j < m; ++j) ++start[wave_[j] + 1];
     for (std::uint32_t w = 1; w <= waves; ++w) start[w + 1] += start[w];
-    for (std::size_t j = 0; j < m; ++j) order[start[wave_[j]]++] = j;
+    queue_.resize(m);
+    for (std::size_t j = 0; j < m; ++j) queue_[start[wave_[j]]++] = {k_[j], l_[j], rk_[j], rl_[j], j};
     for (std::uint32_t w = waves; w >= 1; --w) start[w] = start[w - 1];  // back to the first of each wave
 
     std::vector<double> loss(m, 0.0);  // 2 (energy loss) of each candidate, filled by the owner of k
@@ -261,54 +271,75 @@ class SpreadDsmc {
     const auto R = static_cast<std::size_t>(size_);
     std::vector<std::vector<double>> out(R), in(R);
     std::vector<std::size_t> read(R);
-    auto expect = [&](const std::size_t* from, const std::size_t* to, bool doing_k) {  // sizes both sides know
+    std::vector<std::size_t> own;  // this rank's candidates of the wave (positions in queue_)
+    std::vector<RandomBlock> words;  // their blocks 2s + 1
+    auto expect = [&](std::size_t from, std::size_t to, bool doing_k) {  // sizes both sides know
       for (auto& b : in) b.clear();
-      for (const std::size_t* p = from; p != to; ++p) {
-        const int rk = rk_[*p], rl = rl_[*p];
-        if (doing_k && rk == me && rl != me) in[static_cast<std::size_t>(rl)].resize(in[static_cast<std::size_t>(rl)].size() + 3);
-        if (!doing_k && rl == me && rk != me) in[static_cast<std::size_t>(rk)].resize(in[static_cast<std::size_t>(rk)].size() + 3);
+      for (std::size_t i = from; i < to; ++i) {
+        const Queued& c = queue_[i];
+        if (doing_k && c.rk == me && c.rl != me) in[static_cast<std::size_t>(c.rl)].resize(in[static_cast<std::size_t>(c.rl)].size() + 3);
+        if (!doing_k && c.rl == me && c.rk != me) in[static_cast<std::size_t>(c.rk)].resize(in[static_cast<std::size_t>(c.rk)].size() + 3);
       }
       std::fill(read.begin(), read.end(), 0);
     };
     for (std::uint32_t w = 1; w <= waves; ++w) {
-      const std::size_t* from = order.data() + start[w];
-      const std::size_t* to = order.data() + start[w + 1];
+      const std::size_t from = start[w], to = start[w + 1];
       for (auto& b : out) b.clear();
-      for (const std::size_t* p = from; p != to; ++p)  // partners held here for candidates done elsewhere
-        if (rl_[*p] == me && rk_[*p] != me) push(out[static_cast<std::size_t>(rk_[*p])], store().velocity(l_[*p] - lo_));
+      own.clear();
+      for (std::size_t i = from; i < to; ++i) {  // partners held here for candidates done elsewhere
+        const Queued& c = queue_[i];
+        if (c.rl == me && c.rk != me) push(out[static_cast<std::size_t>(c.rk)], store().velocity(c.l - lo_));
+        if (c.rk == me) own.push_back(i);
+      }
       expect(from, to, true);
       ranks_.exchange(out, in);
       for (auto& b : out) b.clear();
-      constexpr std::ptrdiff_t ahead = 16;  // records prefetched this many candidates ahead
-      for (const std::size_t* p = from; p < std::min(to, from + ahead); ++p) prefetch(*p);
-      for (const std::size_t* p = from; p != to; ++p) {
-        if (to - p > ahead) prefetch(p[ahead]);
-        const std::size_t j = *p;
-        const int rk = rk_[j], rl = rl_[j];
-        if (rk != me) continue;
-        Vec3 vk = store().velocity(k_[j] - lo_);
-        Vec3 vl = rl == me ? store().velocity(l_[j] - lo_) : pull(in[static_cast<std::size_t>(rl)], read[static_cast<std::size_t>(rl)]);
-        loss[j] = collide(first + j, vk, vl, counts, above);
-        store().set_velocity(k_[j] - lo_, vk);
-        if (rl == me) store().set_velocity(l_[j] - lo_, vl);
-        else push(out[static_cast<std::size_t>(rl)], vl);
+      second_blocks(first, own, words);
+      constexpr std::size_t ahead = 16;  // records prefetched this many candidates ahead
+      for (std::size_t o = 0; o < std::min(ahead, own.size()); ++o) prefetch(queue_[own[o]]);
+      for (std::size_t o = 0; o < own.size(); ++o) {
+        if (o + ahead < own.size()) prefetch(queue_[own[o + ahead]]);
+        const Queued& c = queue_[own[o]];
+        Vec3 vk = store().velocity(c.k - lo_);
+        Vec3 vl = c.rl == me ? store().velocity(c.l - lo_)
+                             : pull(in[static_cast<std::size_t>(c.rl)], read[static_cast<std::size_t>(c.rl)]);
+        loss[c.j] = collide(words[o], vk, vl, counts, above);
+        store().set_velocity(c.k - lo_, vk);
+        if (c.rl == me) store().set_velocity(c.l - lo_, vl);
+        else push(out[static_cast<std::size_t>(c.rl)], vl);
       }
       expect(from, to, false);
       ranks_.exchange(out, in);
-      for (const std::size_t* p = from; p != to; ++p)
-        if (rl_[*p] == me && rk_[*p] != me)
-          store().set_velocity(l_[*p] - lo_, pull(in[static_cast<std::size_t>(rk_[*p])], read[static_cast<std::size_t>(rk_[*p])]));
+      for (std::size_t i = from; i < to; ++i) {
+        const Queued& c = queue_[i];
+        if (c.rl == me && c.rk != me)
+          store().set_velocity(c.l - lo_, pull(in[static_cast<std::size_t>(c.rk)], read[static_cast<std::size_t>(c.rk)]));
+      }
     }
     ranks_.sum(loss);  // one nonzero per candidate: the owner's
     for (const double x : loss) loss_sum += x;
     return waves;
   }
 
-  /// Candidate s on its two velocities: schemes/collision_stage.hpp's acceptance on the mean over sigma-hat,
-  /// then sigma-hat given the collision, against the step's majorant.
+  /// Block 2s + 1 (direction and acceptance) of each of the candidates `own` of the segment starting at
+  /// candidate `first`, 64 at a time in SIMD (the same words as one at a time).
+  void second_blocks(std::size_t first, const std::vector<std::size_t>& own, std::vector<RandomBlock>& words) const {
+    constexpr std::size_t batch = 64;
+    words.resize(own.size());
+    std::array<std::uint64_t, batch> steps, index;
+    steps.fill(state_.step);
+    for (std::size_t o0 = 0; o0 < own.size(); o0 += batch) {
+      const std::size_t n = std::min(batch, own.size() - o0);
+      for (std::size_t b = 0; b < batch; ++b) index[b] = 2 * (first + queue_[own[o0 + std::min(b, n - 1)]].j) + 1;
+      const RandomBlocks<batch> w = rng_.blocks(RngPurpose::collision_pair, 0, steps, index);
+      for (std::size_t b = 0; b < n; ++b) words[o0 + b] = {w.word[0][b], w.word[1][b], w.word[2][b], w.word[3][b]};
+    }
+  }
+
+  /// A candidate on its two velocities with its block 2s + 1 `w`: schemes/collision_stage.hpp's acceptance
+  /// on the mean over sigma-hat, then sigma-hat given the collision, against the step's majorant.
   /// Returns 2 (energy loss), 0 without a collision.
-  double collide(std::size_t s, Vec3& vk, Vec3& vl, double (&counts)[2], double& above) const {
-    const RandomBlock w = rng_.block(RngPurpose::collision_pair, 0, state_.step, 2 * s + 1);
+  double collide(const RandomBlock& w, Vec3& vk, Vec3& vl, double (&counts)[2], double& above) const {
     const Vec3 g = vk - vl;
     const double g2 = norm2(g);
     const double omega = pair_.rate_prefactor * kernel_.mean_rate(g2);
@@ -325,11 +356,10 @@ class SpreadDsmc {
     return 2.0 * pair_.energy_loss * d.g_sigma * d.g_sigma;
   }
 
-  /// Hint that candidate j's records held here will be read soon.
-  void prefetch(std::size_t j) noexcept {
-    const int me = me_;
-    if (rk_[j] == me) store().prefetch(k_[j] - lo_);
-    if (rl_[j] == me) store().prefetch(l_[j] - lo_);
+  /// Hint that a candidate's records held here will be read soon.
+  void prefetch(const Queued& c) noexcept {
+    store().prefetch(c.k - lo_);
+    if (c.rl == me_) store().prefetch(c.l - lo_);
   }
 
   static void push(std::vector<double>& b, const Vec3& v) { b.insert(b.end(), {v.x, v.y, v.z}); }
@@ -407,10 +437,12 @@ class SpreadDsmc {
   double momentum_removed_ = 0.0;
   std::uint64_t rescales_ = 0;
   std::uint64_t waves_ = 0;
-  // A segment's candidates (kept to reuse their memory): particles, owners, waves.
+  // A segment's candidates (kept to reuse their memory): particles, owners, waves, in list order; then
+  // in wave order, with j the position in the list.
   std::vector<std::uint64_t> k_, l_;
   std::vector<int> rk_, rl_;
   std::vector<std::uint32_t> wave_;
+  std::vector<Queued> queue_;
   LatestWave latest_;
 };
 
