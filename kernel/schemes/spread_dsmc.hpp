@@ -257,13 +257,15 @@ class SpreadDsmc {
         waves = std::max(waves, wave_[j]);
       }
     }
-    // Counting sort into wave order (list order within a wave), copied into one array that the passes
-    // below read front to back.
+    // The candidates that touch this rank's particles (about 2/R of them; the waves needed all), sorted by
+    // wave (list order within a wave) into one array that the passes below read front to back.
+    auto here = [&](std::size_t j) { return rk_[j] == me_ || rl_[j] == me_; };
     std::vector<std::size_t> start(waves + 2, 0);
-    for (std::size_t j = 0; j < m; ++j) ++start[wave_[j] + 1];
+    for (std::size_t j = 0; j < m; ++j) start[wave_[j] + 1] += here(j) ? 1 : 0;
     for (std::uint32_t w = 1; w <= waves; ++w) start[w + 1] += start[w];
-    queue_.resize(m);
-    for (std::size_t j = 0; j < m; ++j) queue_[start[wave_[j]]++] = {k_[j], l_[j], rk_[j], rl_[j], j};
+    queue_.resize(start[waves + 1]);
+    for (std::size_t j = 0; j < m; ++j)
+      if (here(j)) queue_[start[wave_[j]]++] = {k_[j], l_[j], rk_[j], rl_[j], j};
     for (std::uint32_t w = waves; w >= 1; --w) start[w] = start[w - 1];  // back to the first of each wave
 
     std::vector<double> loss(m, 0.0);  // 2 (energy loss) of each candidate, filled by the owner of k
