@@ -412,6 +412,11 @@ TEST_F(MpiRun, OneSystemOverRanksWithGaussianThermostatIsBitIdentical) {
   expect_identical_runs(ways(true), {"/temperature/replicas"}, " --spread particles");
 }
 
+TEST_F(MpiRun, OneSystemOverRanksWithWhiteNoiseIsBitIdentical) {
+  write("scene.toml", spread_scene() + "[thermostat]\nkind = \"white-noise\"\nbeta = 1.0\n");
+  expect_identical_runs(ways(false), {"/temperature/replicas"}, " --spread particles");
+}
+
 TEST_F(MpiRun, IntruderIsBitIdentical) {
   write("scene.toml", R"([run]
 method = "gillespie"

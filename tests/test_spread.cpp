@@ -72,10 +72,18 @@ TEST(SpreadSystem, GaussianThermostatMakesTheCollisionsOfTheOneProcessStage) {
   expect_same_chain(cooling(ThermostatKind::gaussian), one);
 }
 
-TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
+TEST(SpreadSystem, WhiteNoiseMakesTheCollisionsOfTheOneProcessStage) {  // the kicks: the same normals
   Scene s = cooling(ThermostatKind::white_noise);
-  s.thermostat.beta = 1.0;
-  EXPECT_NE(unsupported_spread_reason(s).find("white-noise"), std::string::npos);
+  s.thermostat.beta = 2.0;  // heats the gas: T rises towards its steady value
+  RunResult one;
+  expect_same_chain(s, one);
+  EXPECT_GT(one.replicas[0].temperature.back(), 1.5 * one.replicas[0].temperature.front()) << "the noise heated";
+}
+
+TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
+  Scene s = cooling(ThermostatKind::none);
+  s.run.storage = Storage::single_precision;
+  EXPECT_NE(unsupported_spread_reason(s).find("float"), std::string::npos);
   Scene two = cooling(ThermostatKind::none);
   two.species.push_back({"b", 1.0, 1.0, 1.0, 10000});
   EXPECT_NE(unsupported_spread_reason(two).find("two species"), std::string::npos);

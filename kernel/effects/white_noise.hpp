@@ -29,24 +29,30 @@ struct WhiteNoise {
   /// Returns the change of sum_i m_i sum_k |c_k|^2 (stored units).
   template <class State>
   double apply(State& state, const StepContext& step) const noexcept {
-    const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
     CompensatedSum change;
-    for (std::size_t i = 0; i < state.species.size(); ++i) {
-      auto& store = state.species[i];
-      const double mass = scene->species[i].mass;
-      for (std::size_t first = 0; first < store.size(); first += batch) {
-        const ParticleNormals<batch> xi(*step.rng, RngPurpose::white_noise_kick, static_cast<std::uint16_t>(i),
-                                        state.step, first);
-        const std::size_t count = std::min(batch, store.size() - first);
-        for (std::size_t k = 0; k < count; ++k) {
-          const Vec3 c = store.velocity(first + k);
-          const Vec3 kicked = c + width * xi[k];
-          store.set_velocity(first + k, kicked);
-          change.add(mass * (norm2(kicked) - norm2(c)));
-        }
+    for (std::size_t i = 0; i < state.species.size(); ++i)
+      kick(state.species[i], 0, state.species[i].size(), 0, static_cast<std::uint16_t>(i), state, step, change);
+    return change.value();
+  }
+
+  /// Kicks particles [from, to) of the store of species i, whose particle k is particle `offset` + k of the
+  /// species (a part of a system spread over ranks, schemes/spread_dsmc.hpp; `from` and `offset` multiples
+  /// of `batch`), and adds the change of m sum |c|^2 to `change`.
+  template <class Store, class State>
+  void kick(Store& store, std::size_t from, std::size_t to, std::uint64_t offset, std::uint16_t i, const State& state,
+            const StepContext& step, CompensatedSum& change) const noexcept {
+    const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
+    const double mass = scene->species[i].mass;
+    for (std::size_t first = from; first < to; first += batch) {
+      const ParticleNormals<batch> xi(*step.rng, RngPurpose::white_noise_kick, i, state.step, offset + first);
+      const std::size_t count = std::min(batch, to - first);
+      for (std::size_t k = 0; k < count; ++k) {
+        const Vec3 c = store.velocity(first + k);
+        const Vec3 kicked = c + width * xi[k];
+        store.set_velocity(first + k, kicked);
+        change.add(mass * (norm2(kicked) - norm2(c)));
       }
     }
-    return change.value();
   }
 };
 

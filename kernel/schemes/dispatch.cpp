@@ -145,12 +145,11 @@ std::string unsupported_spread_reason(const Scene& scene) {
   else if (scene.species.size() != 1) what = "two species";
   else if (scene.shear_rate != 0.0) what = "a [shear] rate";
   else if (scene.relaxation) what = "the [relaxation] term";
-  else if (scene.thermostat.kind == ThermostatKind::white_noise) what = "the white-noise thermostat";
   else if (scene.run.storage != Storage::double_precision) what = "run.storage = \"float\"";
   if (what.empty()) return {};
   return "one system over several ranks (--spread particles) is not implemented for " + what +
-         "; it runs method \"dsmc\" with one species, any kernel and packing_fraction, thermostat \"none\" or "
-         "\"gaussian\", double storage (docs/scaling.md)";
+         "; it runs method \"dsmc\" with one species, any kernel and packing_fraction, any thermostat, double "
+         "storage (docs/scaling.md)";
 }
 
 std::string instantiation_name(const Scene& scene) {

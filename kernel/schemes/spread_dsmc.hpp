@@ -1,7 +1,8 @@
 #pragma once
 // One replica of the time-stepped scheme (000 sec. 3) spread over several ranks: for a system larger than
 // one machine's memory (docs/scaling.md, "One system over several ranks"). One species, no free-flight
-// effect; the Gaussian thermostat (it only moves the velocity scale) may act after the collisions.
+// effect; the Gaussian thermostat (it only moves the velocity scale) or white noise (per particle, the same
+// normals) may act after the collisions.
 //
 // Rank r holds the particles of chunks [C r / R, C (r + 1) / R) of `chunk` consecutive global indices.
 // Every rank draws the whole step's candidate list from the counter-based stream, the same words as the
@@ -41,6 +42,7 @@
 #include "kernel/core/scene.hpp"
 #include "kernel/core/species_store.hpp"
 #include "kernel/effects/gaussian_thermostat.hpp"
+#include "kernel/effects/white_noise.hpp"
 #include "kernel/observe/compensated_sum.hpp"
 #include "kernel/observe/gas_observation.hpp"
 #include "kernel/observe/speed_histogram.hpp"
@@ -56,6 +58,7 @@ class SpreadDsmc {
  public:
   /// Particles per partial sum; a multiple of every batch of the stream (16).
   static constexpr std::size_t chunk = 4096;
+  static_assert(chunk % WhiteNoise::batch == 0);
   static constexpr double rescale_factor = 1.25;  // as schemes/dsmc.hpp
   /// Candidates drawn and ordered at a time: a step is done segment after segment, so a rank's memory
   /// for the candidate list stays about 90 bytes x segment whatever N and R.
@@ -155,6 +158,22 @@ class SpreadDsmc {
     return static_cast<int>(r);
   }
 
+  /// The white-noise kick of the step on this rank's particles (effects/white_noise.hpp, the same normals
+  /// per global particle index); its energy change summed per chunk, then over the chunks in order.
+  double white_noise(const StepContext& step) {
+    const WhiteNoise noise{scene_.thermostat.beta, &scene_};
+    std::vector<double> parts(chunks_, 0.0);
+    for (std::size_t c = first_chunk_; c * chunk < hi_; ++c) {
+      CompensatedSum change;
+      noise.kick(store(), c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_, lo_, 0, state_, step, change);
+      parts[c] = change.value();
+    }
+    ranks_.sum(parts);
+    CompensatedSum total;
+    for (const double x : parts) total.add(x);
+    return total.value();
+  }
+
   /// Moments of all particles about `centre`: compensated sums per chunk, then over the chunks in order.
   SpeciesMoments moments(const Vec3& centre) {
     constexpr std::size_t fields = 6;
@@ -209,9 +228,10 @@ class SpreadDsmc {
     waves_ += waves;
 
     twice_energy_ -= tally.twice_energy_loss;
+    const StepContext after{dt, twice_energy_, tally.twice_energy_loss, &rng_};
     if (scene_.thermostat.kind == ThermostatKind::gaussian)
-      twice_energy_ += GaussianThermostat{scene_.thermostat.zeta_is_cooling_rate, scene_.thermostat.zeta}.apply(
-          state_, {dt, twice_energy_, tally.twice_energy_loss, &rng_});
+      twice_energy_ += GaussianThermostat{scene_.thermostat.zeta_is_cooling_rate, scene_.thermostat.zeta}.apply(state_, after);
+    if (scene_.thermostat.kind == ThermostatKind::white_noise) twice_energy_ += white_noise(after);
     total_.candidates += tally.candidates;
     total_.collisions += tally.collisions;
     total_.majorant_updates += tally.majorant_updates;
