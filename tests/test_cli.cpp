@@ -109,7 +109,7 @@ TEST_F(Cli, HelpExitsZero) {
 TEST_F(Cli, BadArgumentsExitTwo) {
   write("good.toml", good_scene);
   for (const std::string args : {"", "frobnicate", "run", "run good.toml --threads 0", "run good.toml --seed x",
-                                 "run good.toml --no-such-flag"}) {
+                                 "run good.toml --no-such-flag", "run good.toml --spread atoms"}) {
     const Outcome o = granmc(args);
     EXPECT_EQ(o.status, 2) << "granmc " << args;
     EXPECT_FALSE(o.stderr_text.empty()) << "granmc " << args;
@@ -171,3 +171,19 @@ TEST_F(Cli, UnsupportedCombinationExitsTwoSayingWhatIsSupported) {
   EXPECT_NE(o.stderr_text.find("supported:"), std::string::npos) << o.stderr_text;
   EXPECT_TRUE(outputs().empty());
 }
+
+TEST_F(Cli, SpreadParticlesRunsOrSaysWhatItSupports) {  // docs/scaling.md, "One system over several ranks"
+  write("good.toml", good_scene);
+  const Outcome ok = granmc("run good.toml --spread particles --out s.h5 --summary s.json");
+  EXPECT_EQ(ok.status, 0) << ok.stderr_text;
+  EXPECT_TRUE(fs::exists(dir_ / "s.h5"));
+  write("float.toml", with("[run]", "[run]\nstorage = \"float\""));
+  const Outcome refused = granmc("run float.toml --spread particles --out f.h5");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.stderr_text.find("float.toml: one system over several ranks (--spread particles) is not "
+                                     "implemented for run.storage = \"float\""),
+            std::string::npos)
+      << refused.stderr_text;
+  EXPECT_FALSE(fs::exists(dir_ / "f.h5"));
+}
+
