@@ -19,6 +19,7 @@
 #include "kernel/core/species_store.hpp"
 #include "kernel/schemes/dispatch.hpp"
 #include "kernel/schemes/run_plan.hpp"
+#include "kernel/schemes/spread_dsmc.hpp"
 
 namespace granmc {
 
@@ -61,6 +62,15 @@ int explain_command(const Scene& full_scene, const RunArgs& args) {
     std::printf("ranks        %d MPI ranks, replica r on rank r mod %d; rank 0 runs %d of the %d replicas, "
                 "memory and work below are rank 0's\n",
                 at.size, at.size, scene.run.replicas, full_scene.run.replicas);
+  if (args.spread == "particles") {  // docs/scaling.md, "One system over several ranks"
+    const double n = static_cast<double>(full_scene.species[0].particles);
+    std::printf("spread       every replica is one system over %d rank(s), the replicas one after another on one "
+                "thread per rank; per rank %.1f MB of particles and at most %.0f MB of candidate list; it takes "
+                "2-3x the time of one process for each replica (docs/scaling.md)\n",
+                at.size, n * static_cast<double>(stored_bytes_per_particle(full_scene)) / at.size / 1e6,
+                static_cast<double>(spread_segment * spread_candidate_bytes) / 1e6);
+    return exit_ok;
+  }
   if (!scene.intruder)
     std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
               static_cast<double>(plan.particle_bytes) / 1e6, plan.replicas_in_flight,
@@ -111,13 +121,13 @@ int run_command(const RunArgs& args) {
   const std::optional<Scene> loaded = checked_scene(args.scene, args.seed);
   if (!loaded) return exit_bad_input;
   const Scene& scene = *loaded;
-  if (args.explain) return explain_command(scene, args);
-  const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
   const bool spread_particles = args.spread == "particles";
   if (spread_particles) {
     const std::string why = unsupported_spread_reason(scene);
     if (!all_ranks_ok(why.empty(), args.scene + ": " + why + "\n")) return exit_bad_input;
   }
+  if (args.explain) return explain_command(scene, args);
+  const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
 
   const Place at = place();
   try {

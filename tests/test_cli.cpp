@@ -185,5 +185,10 @@ TEST_F(Cli, SpreadParticlesRunsOrSaysWhatItSupports) {  // docs/scaling.md, "One
             std::string::npos)
       << refused.stderr_text;
   EXPECT_FALSE(fs::exists(dir_ / "f.h5"));
+  const Outcome plan = granmc("run good.toml --spread particles --explain");
+  EXPECT_EQ(plan.status, 0) << plan.stderr_text;
+  EXPECT_NE(plan.stdout_text.find("spread       every replica is one system over 1 rank(s)"), std::string::npos)
+      << plan.stdout_text;
+  EXPECT_EQ(granmc("run float.toml --spread particles --explain").status, 2);
 }
 

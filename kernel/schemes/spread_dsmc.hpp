@@ -53,6 +53,12 @@
 
 namespace granmc {
 
+/// Candidates drawn and ordered at a time: a step is done segment after segment, so a rank's memory for
+/// the candidate list stays about spread_candidate_bytes x spread_segment (31 MB) whatever N and R
+/// (indices, owners, waves and losses 36 bytes, the queue up to 32, the table of latest waves 48).
+inline constexpr std::size_t spread_segment = std::size_t{1} << 18;
+inline constexpr std::size_t spread_candidate_bytes = 120;
+
 template <class Kernel>
 class SpreadDsmc {
  public:
@@ -60,9 +66,7 @@ class SpreadDsmc {
   static constexpr std::size_t chunk = 4096;
   static_assert(chunk % WhiteNoise::batch == 0);
   static constexpr double rescale_factor = 1.25;  // as schemes/dsmc.hpp
-  /// Candidates drawn and ordered at a time: a step is done segment after segment, so a rank's memory
-  /// for the candidate list stays about 90 bytes x segment whatever N and R.
-  static constexpr std::size_t segment = std::size_t{1} << 18;
+  static constexpr std::size_t segment = spread_segment;
 
   SpreadDsmc(const Scene& scene, std::uint64_t replica, const Ranks& ranks)
       : scene_(scene),
