@@ -99,6 +99,11 @@ std::vector<std::string> remove_stale_temporaries(const fs::path& dir, const std
 std::string hdf5_name(const SweepScene& s) { return s.name + ".h5"; }
 std::string summary_name(const SweepScene& s) { return s.name + ".json"; }
 
+/// Runs one scene of the sweep as `granmc run` would, writing its two files into `dir`.
+void run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& args) {
+  run_job(s.scene, {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads, args.quiet);
+}
+
 nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, const std::vector<std::string>& hashes,
                           const std::vector<bool>& done) {
   nlohmann::json scenes = nlohmann::json::array();
@@ -131,7 +136,7 @@ void run_in_groups(const SweepArgs& args, const Sweep& sweep, const fs::path& di
       const std::size_t k = todo[at];
       const SweepScene& s = sweep.scenes[k];
       const auto start = std::chrono::steady_clock::now();
-      run_job(s.scene, {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads, args.quiet);
+      run_sweep_scene(s, dir, args);
       finished[k] = 1;
       if (in_group.rank == 0 && !args.quiet) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -213,7 +218,7 @@ int sweep_command(const SweepArgs& args) {
       if (done[k]) continue;
       const SweepScene& s = sweep.scenes[k];
       const auto start = std::chrono::steady_clock::now();
-      run_job(s.scene, {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads, args.quiet);
+      run_sweep_scene(s, dir, args);
       done[k] = true;
       if (at.rank != 0) continue;
       write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, done));

@@ -49,6 +49,7 @@
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/dsmc_replica.hpp"
 #include "kernel/schemes/gas_state.hpp"
+#include "kernel/schemes/initial_state.hpp"
 #include "kernel/schemes/sample_times.hpp"
 
 namespace granmc {
@@ -89,13 +90,7 @@ class SpreadDsmc {
     state_.scale.log_u = 0.5 * std::log(scene.initial_temperature);
     // The Maxwellian start of schemes/initial_state.cpp, particle k from the same block (000 eq. 13).
     const double width = 1.0 / std::sqrt(mass_);
-    for (std::size_t k = lo_; k < hi_; ++k) {
-      const RandomBlock w = rng_.block(RngPurpose::initial_velocity, 0, 0, k);
-      double z[4];
-      standard_normal_pair(uniform_open(w[0]), uniform_open(w[1]), z[0], z[1]);
-      standard_normal_pair(uniform_open(w[2]), uniform_open(w[3]), z[2], z[3]);
-      store().set_velocity(k - lo_, {width * z[0], width * z[1], width * z[2]});
-    }
+    for (std::size_t k = lo_; k < hi_; ++k) store().set_velocity(k - lo_, maxwellian_velocity(rng_, 0, k, width));
     const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments({}).sum_c;
     store().for_each_velocity([&](Vec3& c) { c -= mean; });
     rescale();
@@ -397,13 +392,10 @@ class SpreadDsmc {
 
   /// Dsmc::rescale over all ranks: removes the centre-of-mass velocity, unit stored temperature.
   void rescale() {
-    const SpeciesMoments m = moments({});
-    const double total_mass = mass_ * static_cast<double>(n_);
-    const Vec3 momentum = mass_ * m.sum_c;
-    const double twice = mass_ * m.sum_c2;
-    const Vec3 v_cm = (1.0 / total_mass) * momentum;
-    momentum_removed_ += norm(momentum) / std::sqrt(total_mass * twice);
-    const double twice_energy = twice - norm2(momentum) / total_mass;
+    const GasTotals t = gas_totals(scene_, {moments({})});
+    const Vec3 v_cm = (1.0 / t.mass) * t.momentum;
+    momentum_removed_ += norm(t.momentum) / std::sqrt(t.mass * t.twice_energy);
+    const double twice_energy = t.twice_energy - norm2(t.momentum) / t.mass;
     const double s = std::sqrt(3.0 * static_cast<double>(n_) / twice_energy);
     store().for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
     state_.scale.log_u -= std::log(s);
