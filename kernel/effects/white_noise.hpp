@@ -24,7 +24,7 @@ struct WhiteNoise {
   double beta = 0.0;            // velocity diffusion coefficient (velocity^2 / time)
   const Scene* scene = nullptr; // species masses
 
-  static constexpr std::size_t batch = 16;  // particles whose normals are computed together
+  static constexpr std::size_t batch = 64;  // particles whose normals are computed together
 
   /// Returns the change of sum_i m_i sum_k |c_k|^2 (stored units).
   template <class State>
