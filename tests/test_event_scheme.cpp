@@ -177,3 +177,29 @@ TEST(EventScheme, StrongHeatingOfHardSpheresStaysFiniteWithoutViolations) {
     EXPECT_LT(norm(p) / n, 6.0 * std::sqrt(6.0 * 30.0 * s.run.t_end / n));
   }
 }
+
+TEST(EventScheme, ThinningOnSquaresGivesTheOutcomesOfTheRatio) {
+  // thinning() against the paper's test on the rounded ratio |u| / U_max: random candidates, and candidates
+  // within a few hundred ulp of both boundaries (threshold U_max and U_max), where the squares cannot
+  // decide and the ratio must be computed.
+  auto by_ratio = [](double g2, double threshold, double majorant) {
+    const double ratio = std::sqrt(g2) / majorant;
+    if (ratio > 1.0) return Thinning::violation;
+    return threshold < ratio ? Thinning::real : Thinning::fictitious;
+  };
+  const RandomStream rng(77, 0);
+  std::size_t near = 0;
+  for (std::uint64_t n = 0; n < 400000; ++n) {
+    const RandomBlock r = rng.block(RngPurpose::initial_velocity, 0, 0, n);
+    const double majorant = std::ldexp(uniform_open(r[0]), static_cast<int>(r[1] % 21) - 10);
+    const double threshold = uniform_open(r[2]);
+    const double edge = (n % 3 == 0 ? threshold * majorant : majorant);
+    const double g = n % 3 == 2 ? 1.3 * majorant * uniform_open(r[3])
+                                : edge * (1.0 + (static_cast<double>(r[3] % 801) - 400.0) * 0x1p-52);
+    const double g2 = g * g;
+    if (n % 3 != 2) ++near;
+    ASSERT_EQ(thinning(g2, threshold, majorant, majorant * majorant), by_ratio(g2, threshold, majorant))
+        << n << " " << g2 << " " << threshold << " " << majorant;
+  }
+  EXPECT_GT(near, 250000u);
+}

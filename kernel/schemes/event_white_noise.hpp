@@ -47,6 +47,26 @@ struct EventTally {
   std::uint64_t majorant_violations = 0; // candidates with |v_i - v_j| above the U_max they were drawn with
 };
 
+/// Relative margin of the comparisons made on squares (thinning, raise_majorant): far above the few
+/// roundings (2^-53 each) between a square and the paper's ratio, so a comparison outside it is certain.
+inline constexpr double rounding_margin = 1e-12;
+
+enum class Thinning { fictitious, real, violation };
+
+/// 001 step 2.8 for a candidate with |v_i - v_j|^2 = g2, drawn with the majorant U_max (squared: U_max2):
+/// real iff threshold < ratio = |v_i - v_j| / U_max, a violation (and real) if ratio > 1. Decided on the
+/// squares where the margin makes the outcome certain, so the square root and the division, whose latency
+/// a mispredicted branch waited for, are computed only inside it: every outcome is the one the rounded
+/// ratio gives (tests/test_event_scheme.cpp, near the boundaries).
+inline Thinning thinning(double g2, double threshold, double majorant, double majorant2) noexcept {
+  const double accept = threshold * majorant, accept2 = accept * accept;
+  if (g2 < accept2 * (1.0 - rounding_margin)) return Thinning::fictitious;
+  if (g2 > accept2 * (1.0 + rounding_margin) && g2 < majorant2 * (1.0 - rounding_margin)) return Thinning::real;
+  const double ratio = std::sqrt(g2) / majorant;
+  if (ratio > 1.0) return Thinning::violation;
+  return threshold < ratio ? Thinning::real : Thinning::fictitious;
+}
+
 /// Real is the storage precision of the particles (run.storage; core/species_store.hpp).
 template <class Real, class Kernel>
 class BasicEventWhiteNoise {
@@ -107,6 +127,7 @@ class BasicEventWhiteNoise {
   /// changes, not at every draw (a pow per candidate was a tenth of a VHS candidate's time).
   void set_majorant(double value) noexcept {
     majorant_ = value;
+    majorant2_ = value * value;
     candidate_rate_ = rate_prefactor_ * std::pow(majorant_, kernel_.lambda());
   }
 
@@ -193,12 +214,13 @@ class BasicEventWhiteNoise {
   }
 
   /// Every particle to time t (001 Remark 2 and step 3). Particle k's three normals come from the block
-  /// (brownian_sync, syncs_, k): two Box-Muller pairs, one value unused; computed batch_size particles at
-  /// a time (the last batch computes normals past the end and drops them).
+  /// (brownian_sync, syncs_, k): two Box-Muller pairs, one value unused; computed `sync_batch` particles
+  /// at a time (the last batch computes normals past the end and drops them).
   void bring_all_to(Store& store, double t) const noexcept {
-    for (std::size_t first = 0; first < particles_; first += batch_size) {
-      const ParticleNormals<batch_size> xi(rng_, RngPurpose::brownian_sync, 0, syncs_, first);
-      const std::size_t count = std::min(batch_size, particles_ - first);
+    constexpr std::size_t sync_batch = 64;
+    for (std::size_t first = 0; first < particles_; first += sync_batch) {
+      const ParticleNormals<sync_batch> xi(rng_, RngPurpose::brownian_sync, 0, syncs_, first);
+      const std::size_t count = std::min(sync_batch, particles_ - first);
       for (std::size_t k = 0; k < count; ++k) brownian_update(store, first + k, t, xi[k]);
     }
     store.restart_clock(t);
@@ -217,11 +239,13 @@ class BasicEventWhiteNoise {
     ++tally_.candidates;
     Vec3 vi = store.velocity(i), vj = store.velocity(j);
     if constexpr (!Kernel::constant_rate) {
-      const double drawn_with = majorant_;
-      raise_majorant(vi, vj);                                                 // step 2.7
-      const double ratio = norm(vi - vj) / drawn_with;
-      if (ratio > 1.0) ++tally_.majorant_violations;
-      else if (!(batch.threshold[k] < ratio)) return;  // step 2.8: fictitious
+      const double drawn_with = majorant_, drawn_with2 = majorant2_;
+      raise_majorant(vi, vj);  // step 2.7
+      switch (thinning(norm2(vi - vj), batch.threshold[k], drawn_with, drawn_with2)) {  // step 2.8
+        case Thinning::fictitious: return;
+        case Thinning::violation: ++tally_.majorant_violations; break;
+        case Thinning::real: break;
+      }
     }
     isotropic_scattering(vi, vj, {batch.ex[k], batch.ey[k], batch.ez[k]}, alpha_);  // step 2.9
     store.set_velocity(i, vi);
@@ -231,8 +255,12 @@ class BasicEventWhiteNoise {
     if constexpr (!Kernel::constant_rate) raise_majorant(store.velocity(i), store.velocity(j));
   }
 
+  /// Steps 2.7 and 2.10: U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|). The square root is taken only
+  /// when the squares are within the rounding margin of (U_max / 2)^2 or above it.
   void raise_majorant(const Vec3& vi, const Vec3& vj) noexcept {
-    const double bound = 2.0 * std::sqrt(std::max(norm2(vi - reference_), norm2(vj - reference_)));
+    const double far2 = std::max(norm2(vi - reference_), norm2(vj - reference_));
+    if (far2 < 0.25 * majorant2_ * (1.0 - rounding_margin)) return;
+    const double bound = 2.0 * std::sqrt(far2);
     if (bound > majorant_) {
       set_majorant(bound);
       ++tally_.majorant_updates;
@@ -259,6 +287,7 @@ class BasicEventWhiteNoise {
   double noise_ = 0.0;           // 2 beta / u^2
   double rate_prefactor_ = 0.0;  // pi_hat / U_max^lambda
   double majorant_ = 0.0;        // U_max, stored units
+  double majorant2_ = 0.0;       // U_max^2
   double candidate_rate_ = 0.0;  // pi_hat, per unit time
   Vec3 reference_;               // V of the majorant, stored units
   std::uint64_t draws_ = 0;      // waiting-time draws so far (the random counter)
