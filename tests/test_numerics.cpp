@@ -19,6 +19,7 @@
 #include "kernel/core/turn_sincos.hpp"
 #include "kernel/observe/compensated_sum.hpp"
 #include "kernel/observe/moments.hpp"
+#include "kernel/schemes/initial_state.hpp"
 
 using namespace granmc;
 
@@ -182,4 +183,34 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
   EXPECT_LE(worst_power, 64.0);
   std::printf("[ measured ] largest SIMD - scalar differences in ulp: -log %.2f, normals %.2f, u^2.5 %.2f\n",
               worst_log, worst_normal, worst_power);
+}
+
+TEST(Numerics, MaxwellianStartIsTheSameForAnyPartOfTheParticles) {
+  // schemes/initial_state.cpp: particle first + k gets the normals of its own block whatever batch it is
+  // computed in, so a part filled from `first` (a rank of a spread system) is the same bits as that part
+  // of the whole start; and each velocity is width times the scalar Box-Muller normals of its block (to
+  // the 2 ulp of the SIMD logarithm, above).
+  const RandomStream rng(2026, 3);
+  const double width = 0.75;
+  SpeciesStore whole(1000), part(301);
+  maxwellian_velocities(whole, rng, 1, 0, width);
+  maxwellian_velocities(part, rng, 1, 123, width);
+  for (std::size_t k = 0; k < part.size(); ++k) {
+    ASSERT_EQ(part.velocity(k).x, whole.velocity(123 + k).x) << k;
+    ASSERT_EQ(part.velocity(k).y, whole.velocity(123 + k).y) << k;
+    ASSERT_EQ(part.velocity(k).z, whole.velocity(123 + k).z) << k;
+  }
+  for (std::size_t k = 0; k < whole.size(); ++k) {
+    const RandomBlock r = rng.block(RngPurpose::initial_velocity, 1, 0, k);
+    double z0, z1, z2, unused;
+    standard_normal_pair(uniform_open(r[0]), uniform_open(r[1]), z0, z1);
+    standard_normal_pair(uniform_open(r[2]), uniform_open(r[3]), z2, unused);
+    // 2 ulp of the radius for the normals (as above) and 1 for rounding the two products by width
+    const Vec3 v = whole.velocity(k);
+    const double bound01 = 3.0 * width * std::sqrt(-2.0 * std::log(uniform_open(r[0]))) * 0x1p-52;
+    const double bound2 = 3.0 * width * std::sqrt(-2.0 * std::log(uniform_open(r[2]))) * 0x1p-52;
+    EXPECT_NEAR(v.x, width * z0, bound01) << k;
+    EXPECT_NEAR(v.y, width * z1, bound01) << k;
+    EXPECT_NEAR(v.z, width * z2, bound2) << k;
+  }
 }

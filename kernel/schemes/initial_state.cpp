@@ -1,18 +1,22 @@
 #include "kernel/schemes/initial_state.hpp"
 
+#include <algorithm>
 #include <cmath>
 
-#include "kernel/core/sampling.hpp"
+#include "kernel/core/batch_variates.hpp"
 #include "kernel/observe/moments.hpp"
 
 namespace granmc {
 
-Vec3 maxwellian_velocity(const RandomStream& rng, std::uint16_t species, std::uint64_t k, double width) noexcept {
-  const RandomBlock r = rng.block(RngPurpose::initial_velocity, species, 0, k);
-  double z[4];
-  standard_normal_pair(uniform_open(r[0]), uniform_open(r[1]), z[0], z[1]);
-  standard_normal_pair(uniform_open(r[2]), uniform_open(r[3]), z[2], z[3]);
-  return {width * z[0], width * z[1], width * z[2]};
+template <class Real>
+void maxwellian_velocities(BasicSpeciesStore<Real>& store, const RandomStream& rng, std::uint16_t species,
+                           std::uint64_t first, double width) noexcept {
+  constexpr std::size_t batch = 64;
+  for (std::size_t b = 0; b < store.size(); b += batch) {
+    const ParticleNormals<batch> z(rng, RngPurpose::initial_velocity, species, 0, first + b);
+    const std::size_t count = std::min(batch, store.size() - b);
+    for (std::size_t k = 0; k < count; ++k) store.set_velocity(b + k, width * z[k]);
+  }
 }
 
 template <class Real>
@@ -23,8 +27,7 @@ BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng
     const SpeciesConfig& sp = scene.species[i];
     BasicSpeciesStore<Real> store(static_cast<std::size_t>(sp.particles));
     const double width = 1.0 / std::sqrt(sp.mass);  // stored units: <c_x^2> = T(0) / (m u^2) = 1 / m
-    for (std::size_t k = 0; k < store.size(); ++k)
-      store.set_velocity(k, maxwellian_velocity(rng, static_cast<std::uint16_t>(i), k, width));
+    maxwellian_velocities(store, rng, static_cast<std::uint16_t>(i), 0, width);
     const SpeciesMoments m = species_moments(store);
     const Vec3 mean = (1.0 / static_cast<double>(store.size())) * m.sum_c;
     store.for_each_velocity([&](Vec3& c) { c -= mean; });
@@ -33,6 +36,8 @@ BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng
   return state;
 }
 
+template void maxwellian_velocities(SpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, double) noexcept;
+template void maxwellian_velocities(FloatSpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, double) noexcept;
 template GasState maxwellian_state(const Scene&, const RandomStream&);
 template FloatGasState maxwellian_state(const Scene&, const RandomStream&);
 

@@ -90,7 +90,7 @@ class SpreadDsmc {
     state_.scale.log_u = 0.5 * std::log(scene.initial_temperature);
     // The Maxwellian start of schemes/initial_state.cpp, particle k from the same block (000 eq. 13).
     const double width = 1.0 / std::sqrt(mass_);
-    for (std::size_t k = lo_; k < hi_; ++k) store().set_velocity(k - lo_, maxwellian_velocity(rng_, 0, k, width));
+    maxwellian_velocities(store(), rng_, 0, lo_, width);
     const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments({}).sum_c;
     store().for_each_velocity([&](Vec3& c) { c -= mean; });
     rescale();
