@@ -114,14 +114,19 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     range_k[q] = store_k[q]->size();
     range_l[q] = same_species[q] ? range_k[q] - 1 : store_l[q]->size();
   }
-  typename Store::Particle pk[batch], pl[batch];
-  std::uint8_t qs[batch];
-  std::uint32_t accept_word[batch];
-  std::array<double, batch> dir1{}, dir2{}, sx, sy, sz;  // initialised: a last, partial batch converts all lanes
+  // The draws of a batch: its candidates' pairs, particles, acceptance words and directions.
+  struct Drawn {
+    typename Store::Particle pk[batch], pl[batch];
+    std::uint8_t qs[batch];
+    std::uint32_t accept_word[batch];
+    std::array<double, batch> sx, sy, sz;
+  };
+  std::array<double, batch> dir1{}, dir2{};  // initialised: a last, partial batch converts all lanes
   std::array<std::uint64_t, 2 * batch> steps, index;
   steps.fill(state.step);
-  for (std::uint64_t s0 = 0; s0 < total; s0 += batch) {
-    const std::uint64_t m = std::min(batch, total - s0);
+  // Draws candidates s0 .. s0 + m - 1 into d. They depend on the counters and the pair counts only, never
+  // on a velocity, so a batch can be drawn before the one in front of it has collided.
+  auto draw_batch = [&](Drawn& d, std::uint64_t s0, std::uint64_t m) {
     // Blocks 2s and 2s + 1 of the batch's candidates s, all at once (lanes 2b and 2b + 1; past the end of
     // the step in the last batch, unused).
     for (std::uint64_t k = 0; k < 2 * batch; ++k) index[k] = 2 * s0 + k;
@@ -138,28 +143,52 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
         // an integer below it is exact.
         for (std::size_t k = 0; k + 1 < max_pairs; ++k) q += static_cast<std::size_t>(r >= static_cast<double>(cumulative[k]));
         for (std::size_t k = 0; k + 1 < max_pairs; ++k) cumulative[k] -= static_cast<std::int64_t>(k >= q);
-        qs[b] = static_cast<std::uint8_t>(q);
+        d.qs[b] = static_cast<std::uint8_t>(q);
       }
       const std::uint64_t k = uniform_index(w[0][pick], w[1][pick], range_k[q]);
       std::uint64_t l = uniform_index(w[2][pick], w[3][pick], range_l[q]);
       // Uniform over the other N_i - 1 particles; branch-free: a branch here is taken half the time at
       // random, and its mispredictions discard the overlapped work of the next candidates.
       l += static_cast<std::uint64_t>((one_pair || same_species[q]) & (l >= k));  // one pair: one species
-      pk[b] = store_k[q]->particle(k);
-      pl[b] = store_l[q]->particle(l);
+      d.pk[b] = store_k[q]->particle(k);
+      d.pl[b] = store_l[q]->particle(l);
       dir1[b] = uniform_open(w[0][draw]);
       dir2[b] = uniform_open(w[1][draw]);
-      accept_word[b] = w[2][draw];
+      d.accept_word[b] = w[2][draw];
     }
-    // Prefetches back to back, not between the Philox rounds, where each waited for its address
-    // translation (docs/performance.md, event scheme).
-    for (std::uint64_t b = 0; b < m; ++b) {
-      pk[b].prefetch();
-      pl[b].prefetch();
+    unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(d.sx),
+                 std::span(d.sy), std::span(d.sz));  // the same bits as unit_vector, in SIMD
+  };
+  // Two batches in flight: while the candidates of one collide, the next one is drawn, and candidate b of
+  // the current batch prefetches the records of candidate b of the next, a batch ahead of their use. The
+  // prefetches are spread over the batch: issued a batch's 128 at once, more than the core's outstanding
+  // misses, the last ones waited a memory latency (as in the event scheme, docs/performance.md).
+  std::array<Drawn, 2> drawn;
+  if (total > 0) {
+    draw_batch(drawn[0], 0, std::min(batch, total));
+    for (std::uint64_t b = 0; b < std::min(batch, total); ++b) {
+      drawn[0].pk[b].prefetch();
+      drawn[0].pl[b].prefetch();
     }
-    unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(sx),
-                 std::span(sy), std::span(sz));  // the same bits as unit_vector, in SIMD
+  }
+  for (std::uint64_t s0 = 0, current = 0; s0 < total; s0 += batch, current ^= 1) {
+    const std::uint64_t m = std::min(batch, total - s0);
+    const std::uint64_t m_next = s0 + m < total ? std::min(batch, total - s0 - m) : 0;
+    const Drawn& d = drawn[current];
+    Drawn& next = drawn[current ^ 1];
+    if (m_next > 0) draw_batch(next, s0 + m, m_next);
+    const auto& pk = d.pk;
+    const auto& pl = d.pl;
+    const auto& qs = d.qs;
+    const auto& accept_word = d.accept_word;
+    const auto& sx = d.sx;
+    const auto& sy = d.sy;
+    const auto& sz = d.sz;
     for (std::uint64_t b = 0; b < m; ++b) {
+      if (b < m_next) {
+        next.pk[b].prefetch();
+        next.pl[b].prefetch();
+      }
       const std::size_t q = one_pair ? 0 : qs[b];
       const PairCoefficients& p = one_pair ? only_pair : pairs[q];
       Vec3 vk = pk[b].velocity();
