@@ -39,7 +39,13 @@ struct VhsKernel {
   double exponent = 0.5;
   [[nodiscard]] double lambda() const noexcept { return exponent; }
   template <std::size_t N>
-  void acceptance_thresholds(std::span<double, N> u) const noexcept { power_in_place(u, 1.0 / exponent); }
+  void acceptance_thresholds(std::span<double, N> u) const noexcept {
+    if (exponent == 0.5) {  // u^2 (001 Example 9): one rounding, and a tenth of xsimd's pow in time
+      for (double& x : u) x *= x;
+    } else {
+      power_in_place(u, 1.0 / exponent);
+    }
+  }
 };
 
 }  // namespace granmc
