@@ -8,8 +8,9 @@
 // l != k, block 2 s + 1 for the direction n (words 0, 1) and the acceptance uniform (word 2); acceptance
 // on the mean of omega over sigma-hat, prefactor |g| / 4, then sigma-hat = (g-hat + n) / |g-hat + n|
 // (collide/impact_direction.hpp); candidates
-// are drawn in batches of 64 (Philox over the batch's counters as arrays, directions in SIMD) with their
-// records prefetched back to back, then processed in order. The result is the
+// are drawn in batches of 64 (Philox over the batch's counters as arrays, directions in SIMD), a batch
+// ahead of their use, and candidate b prefetches the records of candidate b of the next batch; then
+// processed in order. The result is the
 // same bits as collide_step on the same state and seed (checked at the start of bench_effects).
 //
 // What it leaves out of the generic stage: the pair table (the constants are locals), the interleaving
@@ -64,13 +65,15 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   const double prefactor = c.rate_prefactor, one_plus_alpha = c.one_plus_alpha, loss = c.twice_energy_loss;
   double majorant = omega_max;
   HandTally t;
-  std::uint64_t ks[batch], ls[batch];
-  std::uint32_t accept_word[batch];
-  std::array<double, batch> dir1{}, dir2{}, sx, sy, sz;  // initialised: a last, partial batch converts all lanes
+  struct Drawn {
+    std::uint64_t ks[batch], ls[batch];
+    std::uint32_t accept_word[batch];
+    std::array<double, batch> sx, sy, sz;
+  };
+  std::array<double, batch> dir1{}, dir2{};  // initialised: a last, partial batch converts all lanes
   std::array<std::uint64_t, 2 * batch> steps, index;
   steps.fill(step);
-  for (std::uint64_t s0 = 0; s0 < candidates; s0 += batch) {
-    const std::uint64_t m = std::min(batch, candidates - s0);
+  auto draw_batch = [&](Drawn& d, std::uint64_t s0, std::uint64_t m) {
     for (std::uint64_t k = 0; k < 2 * batch; ++k) index[k] = 2 * s0 + k;
     const RandomBlocks<2 * batch> blocks = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
     const auto& w = blocks.word;
@@ -78,19 +81,40 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       const std::uint64_t k = uniform_index(w[0][2 * b], w[1][2 * b], n);
       std::uint64_t l = uniform_index(w[2][2 * b], w[3][2 * b], n - 1);
       l += static_cast<std::uint64_t>(l >= k);  // uniform over the other n - 1
-      ks[b] = k;
-      ls[b] = l;
+      d.ks[b] = k;
+      d.ls[b] = l;
       dir1[b] = uniform_open(w[0][2 * b + 1]);
       dir2[b] = uniform_open(w[1][2 * b + 1]);
-      accept_word[b] = w[2][2 * b + 1];
+      d.accept_word[b] = w[2][2 * b + 1];
     }
-    for (std::uint64_t b = 0; b < m; ++b) {
-      __builtin_prefetch(v + ks[b], 1, 3);
-      __builtin_prefetch(v + ls[b], 1, 3);
+    unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(d.sx),
+                 std::span(d.sy), std::span(d.sz));
+  };
+  std::array<Drawn, 2> drawn;
+  if (candidates > 0) {
+    draw_batch(drawn[0], 0, std::min(batch, candidates));
+    for (std::uint64_t b = 0; b < std::min(batch, candidates); ++b) {
+      __builtin_prefetch(v + drawn[0].ks[b], 1, 3);
+      __builtin_prefetch(v + drawn[0].ls[b], 1, 3);
     }
-    unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(sx),
-                 std::span(sy), std::span(sz));
+  }
+  for (std::uint64_t s0 = 0, current = 0; s0 < candidates; s0 += batch, current ^= 1) {
+    const std::uint64_t m = std::min(batch, candidates - s0);
+    const std::uint64_t m_next = s0 + m < candidates ? std::min(batch, candidates - s0 - m) : 0;
+    const Drawn& d = drawn[current];
+    Drawn& next = drawn[current ^ 1];
+    if (m_next > 0) draw_batch(next, s0 + m, m_next);
+    const auto& ks = d.ks;
+    const auto& ls = d.ls;
+    const auto& accept_word = d.accept_word;
+    const auto& sx = d.sx;
+    const auto& sy = d.sy;
+    const auto& sz = d.sz;
     for (std::uint64_t b = 0; b < m; ++b) {
+      if (b < m_next) {
+        __builtin_prefetch(v + next.ks[b], 1, 3);
+        __builtin_prefetch(v + next.ls[b], 1, 3);
+      }
       HandRecord& a = v[ks[b]];
       HandRecord& e = v[ls[b]];
       const double gx = a.x - e.x, gy = a.y - e.y, gz = a.z - e.z;

@@ -249,11 +249,12 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
 /// block 2s + 1 the direction n (two 32-bit uniforms), the acceptance uniform and the pair choice.
 /// omega_max is in the form of majorant_bound<Shift>.
 ///
-/// Candidates are drawn in batches of `batch`: the random blocks, pairs and indices of a batch first, with
-/// the two velocity records of each candidate prefetched, then the candidates one by one in order. Two
-/// candidates of a batch that share a particle therefore still act in sequence, and the result is the
-/// same for every batch size (tests/test_collision_stage.cpp); the batch only lets the memory loads of
-/// different candidates overlap (perf/bench_collisions.cpp: 1.4x at N = 10^5, 3x at N = 10^7).
+/// Candidates are drawn in batches of `batch`: the random blocks, pairs and indices of a batch first, a
+/// batch ahead of their use, with the two velocity records of each candidate prefetched while the batch
+/// before it collides; then the candidates one by one in order. Two candidates that share a particle
+/// therefore still act in sequence, and the result is the same for every batch size
+/// (tests/test_collision_stage.cpp); the batches only let the memory loads of different candidates
+/// overlap (perf/bench_collisions.cpp, docs/performance.md).
 template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift, class Real = double>
 void collide_step(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                   std::span<const std::uint64_t> candidates, const RandomStream& rng,
