@@ -8,7 +8,7 @@ GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
 .PHONY: all setup configure build run test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-8-shear-rate fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
-	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full intruder-cost accuracy-cost bench-effects stability
+	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float intruder-cost accuracy-cost bench-effects stability
 
 all: build
 
@@ -111,6 +111,12 @@ tails-001-full: build
 	$(TAILS) drivers/scenes/001_tails/example7.toml
 	$(TAILS) drivers/scenes/001_tails/example8.toml
 	$(TAILS) drivers/scenes/001_tails/example9.toml
+
+# The same with 16-byte particles (run.storage = "float"): half the memory, a little faster at 10^7.
+tails-001-full-float: build
+	$(TAILS) drivers/scenes/001_tails/example7.toml --storage float
+	$(TAILS) drivers/scenes/001_tails/example8.toml --storage float
+	$(TAILS) drivers/scenes/001_tails/example9.toml --storage float
 
 # The suite, then the MPI test in $(MPI_BUILD) (replicas over ranks against one process, docs/scaling.md):
 # installs OpenMPI if missing and builds only granmc and test_mpi there.

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Run a 001 tail scene (drivers/scenes/001_tails/) at a chosen size and fit its tail exponent.
 
-Usage: /usr/bin/python3 drivers/tails.py SCENE.toml [--particles N] [--replicas R] [--out DIR]
-                                          [--granmc build/bin/granmc] [tail_fit.py options after --]
+Usage: /usr/bin/python3 drivers/tails.py SCENE.toml [--particles N] [--replicas R] [--storage float]
+                                          [--out DIR] [--granmc build/bin/granmc] [tail_fit.py options after --]
 
 Writes the scene at that size to DIR/run.toml, runs granmc (skipped when DIR/run.json holds the result of
 exactly that scene text), then drivers/tail_fit.py on DIR/run.h5 with the theory exponent
@@ -24,6 +24,8 @@ def main():
     p.add_argument("scene")
     p.add_argument("--particles", type=int, default=None)
     p.add_argument("--replicas", type=int, default=None)
+    p.add_argument("--storage", choices=["double", "float"], default=None,
+                   help="run.storage: float halves the memory (docs/scenes.md, docs/accuracy-cost.md)")
     p.add_argument("--out", default=None)
     p.add_argument("--granmc", default="build/bin/granmc")
     p.add_argument("--threads", type=int, default=0)
@@ -34,9 +36,12 @@ def main():
         scene["species"][0]["particles"] = args.particles
     if args.replicas:
         scene["run"]["replicas"] = args.replicas
+    if args.storage:
+        scene["run"]["storage"] = args.storage
     name = os.path.splitext(os.path.basename(args.scene))[0]
     n, r = scene["species"][0]["particles"], scene["run"]["replicas"]
-    out = args.out or os.path.join("results", f"001_tails_{name}_n{n}_N{r}")
+    storage = "_float" if scene["run"].get("storage") == "float" else ""
+    out = args.out or os.path.join("results", f"001_tails_{name}_n{n}_N{r}{storage}")
     os.makedirs(out, exist_ok=True)
     summary = run_point(args.granmc, scene, os.path.join(out, "run"), args.threads)
     theory = json.loads(subprocess.run([args.granmc, "theory", os.path.join(out, "run.toml")], check=True,
