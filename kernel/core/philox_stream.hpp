@@ -7,7 +7,6 @@
 // (index, step, purpose, sub): what it is for, never who draws it. Words: (index low 32 bits,
 // step low 32 bits, step high 16 | index high 16 << 16, purpose | sub << 16), so step and index each
 // range over 2^48 values.
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
