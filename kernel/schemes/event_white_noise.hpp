@@ -136,8 +136,8 @@ class BasicEventWhiteNoise {
   /// block 0 gives the waiting time, i and the acceptance uniform, block 1 gives j and e, blocks 2-3 the six
   /// normals of the two Brownian increments (three Box-Muller pairs). A batch is prepared while the one
   /// before it is consumed, so the pairs' records can be prefetched batch_size draws ahead of their use
-  /// (prefetch_pair), and the logs and polynomials run in SIMD (core/batch_variates.hpp). The candidates still act one after the
-  /// other, in draw order.
+  /// (prefetch_pair), and the logs and polynomials run in SIMD (core/batch_variates.hpp). The candidates
+  /// still act one after the other, in draw order.
   static constexpr std::size_t batch_size = 32;
   struct DrawBatch {
     std::array<std::size_t, batch_size> i{}, j{};
