@@ -8,6 +8,7 @@
 // core/turn_sincos.hpp with identical operations, so directions agree bit for bit. The logarithm is
 // xsimd's, within 1 ulp of libm's; xsimd's pow is within about 20 ulp (tests/test_numerics.cpp measures
 // all three), a relative error of 5e-15 in an acceptance probability.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -162,5 +163,17 @@ class ParticleNormals {
  private:
   std::array<double, 2 * N> z1_, z2_;
 };
+
+/// f(k, xi) for k = 0 .. count - 1 in order, xi the normal vector of particle first + k (its own block, as
+/// ParticleNormals), computed N particles at a time: the values do not depend on N.
+template <std::size_t N, class F>
+inline void for_each_particle_normal(const RandomStream& rng, RngPurpose purpose, std::uint16_t sub, std::uint64_t step,
+                                     std::uint64_t first, std::size_t count, F&& f) {
+  for (std::size_t b = 0; b < count; b += N) {
+    const ParticleNormals<N> xi(rng, purpose, sub, step, first + b);
+    const std::size_t in_batch = std::min(N, count - b);
+    for (std::size_t k = 0; k < in_batch; ++k) f(b + k, xi[k]);
+  }
+}
 
 }  // namespace granmc

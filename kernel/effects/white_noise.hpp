@@ -5,7 +5,6 @@
 // sec. 4 describes it; the event scheme, schemes/event_white_noise.hpp, has no splitting error).
 // Random words: purpose white_noise_kick, sub = species, step = time step, index = particle; the normals
 // of 16 particles at a time in SIMD (core/batch_variates.hpp).
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -43,16 +42,13 @@ struct WhiteNoise {
             const StepContext& step, CompensatedSum& change) const noexcept {
     const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
     const double mass = scene->species[i].mass;
-    for (std::size_t first = from; first < to; first += batch) {
-      const ParticleNormals<batch> xi(*step.rng, RngPurpose::white_noise_kick, i, state.step, offset + first);
-      const std::size_t count = std::min(batch, to - first);
-      for (std::size_t k = 0; k < count; ++k) {
-        const Vec3 c = store.velocity(first + k);
-        const Vec3 kicked = c + width * xi[k];
-        store.set_velocity(first + k, kicked);
-        change.add(mass * (norm2(kicked) - norm2(c)));
-      }
-    }
+    for_each_particle_normal<batch>(*step.rng, RngPurpose::white_noise_kick, i, state.step, offset + from, to - from,
+                                    [&](std::size_t k, const Vec3& xi) {
+                                      const Vec3 c = store.velocity(from + k);
+                                      const Vec3 kicked = c + width * xi;
+                                      store.set_velocity(from + k, kicked);
+                                      change.add(mass * (norm2(kicked) - norm2(c)));
+                                    });
   }
 };
 

@@ -220,15 +220,11 @@ class BasicEventWhiteNoise {
   }
 
   /// Every particle to time t (001 Remark 2 and step 3). Particle k's three normals come from the block
-  /// (brownian_sync, syncs_, k): two Box-Muller pairs, one value unused; computed `sync_batch` particles
-  /// at a time (the last batch computes normals past the end and drops them).
+  /// (brownian_sync, syncs_, k): two Box-Muller pairs, one value unused; computed 64 particles at a
+  /// time (the last batch computes normals past the end and drops them).
   void bring_all_to(Store& store, double t) const noexcept {
-    constexpr std::size_t sync_batch = 64;
-    for (std::size_t first = 0; first < particles_; first += sync_batch) {
-      const ParticleNormals<sync_batch> xi(rng_, RngPurpose::brownian_sync, 0, syncs_, first);
-      const std::size_t count = std::min(sync_batch, particles_ - first);
-      for (std::size_t k = 0; k < count; ++k) brownian_update(store, first + k, t, xi[k]);
-    }
+    for_each_particle_normal<64>(rng_, RngPurpose::brownian_sync, 0, syncs_, 0, particles_,
+                                 [&](std::size_t k, const Vec3& xi) { brownian_update(store, k, t, xi); });
     store.restart_clock(t);
   }
 

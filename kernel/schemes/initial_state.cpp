@@ -1,6 +1,5 @@
 #include "kernel/schemes/initial_state.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "kernel/core/batch_variates.hpp"
@@ -11,12 +10,8 @@ namespace granmc {
 template <class Real>
 void maxwellian_velocities(BasicSpeciesStore<Real>& store, const RandomStream& rng, std::uint16_t species,
                            std::uint64_t first, double width) noexcept {
-  constexpr std::size_t batch = 64;
-  for (std::size_t b = 0; b < store.size(); b += batch) {
-    const ParticleNormals<batch> z(rng, RngPurpose::initial_velocity, species, 0, first + b);
-    const std::size_t count = std::min(batch, store.size() - b);
-    for (std::size_t k = 0; k < count; ++k) store.set_velocity(b + k, width * z[k]);
-  }
+  for_each_particle_normal<64>(rng, RngPurpose::initial_velocity, species, 0, first, store.size(),
+                               [&](std::size_t k, const Vec3& z) { store.set_velocity(k, width * z); });
 }
 
 template <class Real>
