@@ -95,8 +95,13 @@ struct GranmcGas {
     state.species[0].for_each_velocity([&](const Vec3& c) { e += norm2(c); });
     return e;
   }
+  /// As Dsmc::rescale: the centre-of-mass velocity removed, then unit temperature.
   void rescale() {
     const double n = static_cast<double>(state.species[0].size());
+    Vec3 sum;
+    state.species[0].for_each_velocity([&](const Vec3& c) { sum += c; });
+    const Vec3 v_cm = (1.0 / n) * sum;
+    state.species[0].for_each_velocity([&](Vec3& c) { c -= v_cm; });
     const double s = std::sqrt(3.0 * n / twice_energy_exact());
     state.species[0].for_each_velocity([&](Vec3& c) { c = s * c; });
     twice_energy = reference = 3.0 * n;
@@ -162,10 +167,25 @@ struct NaiveGas {
       : dsmc(static_cast<std::size_t>(n), kSeed, 1.0, kRestitution, 1.0, 1.0) {
     rescale();
   }
+  /// As GranmcGas::rescale.
   void rescale() {
-    double e = 0.0;
-    for (const naive::Particle& p : dsmc.particles) e += p.vx * p.vx + p.vy * p.vy + p.vz * p.vz;
     const double n = static_cast<double>(dsmc.particles.size());
+    double mx = 0.0, my = 0.0, mz = 0.0;
+    for (const naive::Particle& p : dsmc.particles) {
+      mx += p.vx;
+      my += p.vy;
+      mz += p.vz;
+    }
+    mx /= n;
+    my /= n;
+    mz /= n;
+    double e = 0.0;
+    for (naive::Particle& p : dsmc.particles) {
+      p.vx -= mx;
+      p.vy -= my;
+      p.vz -= mz;
+      e += p.vx * p.vx + p.vy * p.vy + p.vz * p.vz;
+    }
     const double s = std::sqrt(3.0 * n / e);
     for (naive::Particle& p : dsmc.particles) {
       p.vx *= s;
