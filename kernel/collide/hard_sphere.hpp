@@ -10,7 +10,9 @@
 // sigma-hat by Theta(g.sigma) (g.sigma), so its mean over sigma-hat uniform on the sphere is
 // mean_rate(|g|^2) = |g|^lambda / 4 (the mean of Theta(g.sigma) (g.sigma) is |g| / 4), with
 // mean_bound(U) >= mean_rate up to U (schemes/collision_stage.hpp accepts a pair with probability
-// mean_rate / omega_max).
+// mean_rate / omega_max). mean_rate takes a double or an xsimd batch of them (the stage screens a batch's
+// candidates in SIMD), and screen_candidates says whether that screen can reject any: false when the mean
+// rate is a constant, so that every candidate collides.
 #include <cmath>
 
 namespace granmc {
@@ -23,7 +25,12 @@ struct HardSphere {
   /// Rate factor for normal relative speed g_sigma = g.sigma-hat > 0.
   static constexpr double rate(double g_sigma, double /*g2*/) noexcept { return g_sigma; }
   static constexpr double bound(double relative_speed) noexcept { return relative_speed; }
-  static double mean_rate(double g2) noexcept { return 0.25 * std::sqrt(g2); }
+  static constexpr bool screen_candidates = true;
+  template <class T>
+  static T mean_rate(const T& g2) noexcept {
+    using std::sqrt;  // xsimd's for a batch
+    return 0.25 * sqrt(g2);
+  }
   static constexpr double mean_bound(double relative_speed) noexcept { return 0.25 * relative_speed; }
 };
 

@@ -17,6 +17,7 @@ struct MaxwellPseudomolecules {
   static constexpr MaxwellPseudomolecules from_scene(const Scene&) noexcept { return {}; }
   static double rate(double g_sigma, double g2) noexcept { return g_sigma / std::sqrt(g2); }
   static constexpr double bound(double /*relative_speed*/) noexcept { return 1.0; }
+  static constexpr bool screen_candidates = false;  // every candidate collides
   static constexpr double mean_rate(double /*g2*/) noexcept { return 0.25; }
   static constexpr double mean_bound(double /*relative_speed*/) noexcept { return 0.25; }
 };

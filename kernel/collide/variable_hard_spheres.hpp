@@ -20,7 +20,12 @@ struct VariableHardSpheres {
     return g_sigma * std::pow(g2, 0.5 * (lambda - 1.0));
   }
   [[nodiscard]] double bound(double relative_speed) const noexcept { return std::pow(relative_speed, lambda); }
-  [[nodiscard]] double mean_rate(double g2) const noexcept { return 0.25 * std::pow(g2, 0.5 * lambda); }
+  static constexpr bool screen_candidates = true;
+  template <class T>
+  [[nodiscard]] T mean_rate(const T& g2) const noexcept {
+    using std::pow;  // xsimd's for a batch
+    return 0.25 * pow(g2, T(0.5 * lambda));
+  }
   [[nodiscard]] double mean_bound(double relative_speed) const noexcept { return 0.25 * std::pow(relative_speed, lambda); }
 };
 

@@ -9,6 +9,11 @@
 
 namespace granmc {
 
+/// Relative margin of a comparison made on another form of the same quantities (squares instead of a
+/// ratio, SIMD instead of libm): far above the few roundings (2^-53 each, or xsimd's ulps) between the two
+/// forms, so an outcome outside it is the one the exact form gives (event thinning, the stage's screen).
+inline constexpr double rounding_margin = 1e-12;
+
 /// Uniform on (0, 1) from 32 random bits: (w + 1/2) 2^-32, never 0 or 1.
 constexpr double uniform_open(std::uint32_t w) noexcept { return (static_cast<double>(w) + 0.5) * 0x1p-32; }
 

@@ -39,6 +39,8 @@ class BasicSpeciesStore {
     void set_velocity(const Vec3& v) const noexcept { store(*r_, v); }
     /// Hint that the particle will be read and written soon (random pairs are memory-latency bound).
     void prefetch() const noexcept { __builtin_prefetch(r_, 1, 3); }
+    /// Where the record is: equal for two handles of the same particle.
+    [[nodiscard]] const void* address() const noexcept { return r_; }
 
    private:
     friend class BasicSpeciesStore;

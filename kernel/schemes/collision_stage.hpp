@@ -28,6 +28,7 @@
 // gas, collide/enskog_shear_shift.hpp, which also tallies the shear work and the collisional transfer.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -159,6 +160,108 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(d.sx),
                  std::span(d.sy), std::span(d.sz));  // the same bits as unit_vector, in SIMD
   };
+  // Candidate b of batch d in full: the acceptance, then the collision (000 sec. 3, steps 2-3).
+  auto test_and_collide = [&](const Drawn& d, std::uint64_t b) {
+    const std::size_t q = one_pair ? 0 : d.qs[b];
+    const PairCoefficients& p = one_pair ? only_pair : pairs[q];
+    Vec3 vk = d.pk[b].velocity();
+    Vec3 vl = d.pl[b].velocity();
+    // n = (sx, sy, sz)[b], uniform on the sphere, is read where it is used: read before the acceptance it
+    // holds registers the one-pair loop needs (callgrind, docs/performance.md).
+    Vec3 sigma;
+    double g_sigma;
+    if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
+      sigma = {d.sx[b], d.sy[b], d.sz[b]};
+      const Vec3 g = shift.relative_velocity(vk, vl, sigma, p);
+      g_sigma = dot(g, sigma);
+      if (g_sigma <= 0.0) return;  // Theta(g.sigma): the pair is separating along sigma-hat
+      const double omega = p.rate_prefactor * kernel.rate(g_sigma, norm2(g));
+      if (omega > majorant[q]) {
+        majorant[q] = omega;
+        ++tally[q].majorant_updates;
+      } else if (uniform_open(d.accept_word[b]) * majorant[q] > omega) {
+        return;
+      }
+    } else {  // the mean over sigma-hat first, then sigma-hat given the collision
+      const Vec3 g = vk - vl;
+      const double g2 = norm2(g);
+      // Maxwell: omega = omega_max (majorant_bound), so every candidate passes the test (u < 1).
+      const double omega = p.rate_prefactor * kernel.mean_rate(g2);
+      if (omega > majorant[q]) {
+        majorant[q] = omega;
+        ++tally[q].majorant_updates;
+      } else if (uniform_open(d.accept_word[b]) * majorant[q] > omega) {
+        return;
+      }
+      const ImpactDirection id = impact_direction(g, std::sqrt(g2), {d.sx[b], d.sy[b], d.sz[b]});
+      if (!(id.g_sigma > 0.0)) return;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
+      sigma = id.sigma;
+      g_sigma = id.g_sigma;
+    }
+    inelastic_collision(vk, vl, sigma, g_sigma, p);
+    d.pk[b].set_velocity(vk);
+    d.pl[b].set_velocity(vl);
+    ++tally[q].collisions;
+    tally[q].twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
+    if constexpr (Shift::active) {  // collide/enskog_shear_shift.hpp
+      const double impulse = p.one_plus_alpha * p.reduced_mass * g_sigma;
+      tally[q].twice_energy_shear_work -= 2.0 * impulse * p.diameter * shift.rate * sigma.x * sigma.y;
+      tally[q].transfer += weighted_dyad(impulse * p.diameter, sigma);
+    }
+  };
+  // The screen (acceptance on the mean, a kernel whose mean rate varies): before batch d's candidates act,
+  // all of them are tested at once on the velocities as they are then, and only those it cannot reject
+  // go through test_and_collide, in order. A candidate is left out only if it is rejected with
+  // certainty: u omega_max > omega (1 + rounding_margin), omega computed in SIMD (a few ulp from the
+  // scalar omega; omega_max only grows within a batch, which keeps a rejection a rejection), and neither
+  // of its particles belongs to an earlier candidate of the batch (whose collision could have changed
+  // it). So every candidate does what it did in sequence, the same bits (tests/test_collision_stage.cpp),
+  // and the branch on the acceptance, taken at random about one time in five and mispredicted, is gone.
+  // `shared` finds the particles of earlier candidates through a table of batch stamps indexed by
+  // record address (two particles can share a slot: a needless full test, never a missed one).
+  constexpr bool screened = !Shift::active && Kernel::screen_candidates;
+  static_assert(!screened || batch <= 64, "the screen keeps a batch's outcomes in one 64-bit mask");
+  constexpr std::size_t slots_log2 = 14;
+  std::array<std::uint8_t, screened ? std::size_t{1} << slots_log2 : 1> seen{};
+  std::uint8_t stamp = 0;
+  auto slot = [](const typename Store::Particle& p) {
+    return (reinterpret_cast<std::uintptr_t>(p.address()) >> 4) & ((std::uintptr_t{1} << slots_log2) - 1);
+  };
+  // A batch in whole SIMD registers; initialised, as the lanes past a partial batch are screened too.
+  constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
+  std::array<double, lanes> g2{}, threshold{}, prefactor{};
+  // Bit b set: candidate b of d needs test_and_collide. Candidate b prefetches candidate b of the next
+  // batch (m_next of them), as the loop below does without the screen.
+  auto screen = [&](const Drawn& d, std::uint64_t m, const Drawn& next, std::uint64_t m_next) {
+    if (++stamp == 0) {  // 255 batches since the table was cleared
+      seen.fill(0);
+      stamp = 1;
+    }
+    std::uint64_t full_test = 0;
+    if constexpr (screened) {  // else not called, and kernel.mean_rate need not take a batch
+      for (std::uint64_t b = 0; b < m; ++b) {
+        if (b < m_next) {
+          next.pk[b].prefetch();
+          next.pl[b].prefetch();
+        }
+        const std::size_t q = one_pair ? 0 : d.qs[b];
+        g2[b] = norm2(d.pk[b].velocity() - d.pl[b].velocity());
+        threshold[b] = uniform_open(d.accept_word[b]) * majorant[q];
+        prefactor[b] = one_pair ? only_pair.rate_prefactor : pairs[q].rate_prefactor;
+        const std::size_t sk = slot(d.pk[b]), sl = slot(d.pl[b]);
+        full_test |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
+        seen[sk] = stamp;
+        seen[sl] = stamp;
+      }
+      std::array<double, lanes> omega;
+      for (std::size_t k = 0; k < lanes; k += SimdDouble::size)
+        (SimdDouble::load_unaligned(&prefactor[k]) * kernel.mean_rate(SimdDouble::load_unaligned(&g2[k])) *
+         (1.0 + rounding_margin))
+            .store_unaligned(&omega[k]);
+      for (std::uint64_t b = 0; b < m; ++b) full_test |= static_cast<std::uint64_t>(!(threshold[b] > omega[b])) << b;
+    }
+    return full_test;
+  };
   // Two batches in flight: while the candidates of one collide, the next one is drawn, and candidate b of
   // the current batch prefetches the records of candidate b of the next, a batch ahead of their use. The
   // prefetches are spread over the batch: issued a batch's 128 at once, more than the core's outstanding
@@ -177,63 +280,16 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     const Drawn& d = drawn[current];
     Drawn& next = drawn[current ^ 1];
     if (m_next > 0) draw_batch(next, s0 + m, m_next);
-    const auto& pk = d.pk;
-    const auto& pl = d.pl;
-    const auto& qs = d.qs;
-    const auto& accept_word = d.accept_word;
-    const auto& sx = d.sx;
-    const auto& sy = d.sy;
-    const auto& sz = d.sz;
-    for (std::uint64_t b = 0; b < m; ++b) {
-      if (b < m_next) {
-        next.pk[b].prefetch();
-        next.pl[b].prefetch();
-      }
-      const std::size_t q = one_pair ? 0 : qs[b];
-      const PairCoefficients& p = one_pair ? only_pair : pairs[q];
-      Vec3 vk = pk[b].velocity();
-      Vec3 vl = pl[b].velocity();
-      // n = (sx, sy, sz)[b], uniform on the sphere, is read where it is used: read before the acceptance it
-      // holds registers the one-pair loop needs (callgrind, docs/performance.md).
-      Vec3 sigma;
-      double g_sigma;
-      if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
-        sigma = {sx[b], sy[b], sz[b]};
-        const Vec3 g = shift.relative_velocity(vk, vl, sigma, p);
-        g_sigma = dot(g, sigma);
-        if (g_sigma <= 0.0) continue;  // Theta(g.sigma): the pair is separating along sigma-hat
-        const double omega = p.rate_prefactor * kernel.rate(g_sigma, norm2(g));
-        if (omega > majorant[q]) {
-          majorant[q] = omega;
-          ++tally[q].majorant_updates;
-        } else if (uniform_open(accept_word[b]) * majorant[q] > omega) {
-          continue;
+    if constexpr (screened) {
+      for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1)
+        test_and_collide(d, static_cast<std::uint64_t>(std::countr_zero(full_test)));
+    } else {
+      for (std::uint64_t b = 0; b < m; ++b) {
+        if (b < m_next) {
+          next.pk[b].prefetch();
+          next.pl[b].prefetch();
         }
-      } else {  // the mean over sigma-hat first, then sigma-hat given the collision
-        const Vec3 g = vk - vl;
-        const double g2 = norm2(g);
-        // Maxwell: omega = omega_max (majorant_bound), so every candidate passes the test (u < 1).
-        const double omega = p.rate_prefactor * kernel.mean_rate(g2);
-        if (omega > majorant[q]) {
-          majorant[q] = omega;
-          ++tally[q].majorant_updates;
-        } else if (uniform_open(accept_word[b]) * majorant[q] > omega) {
-          continue;
-        }
-        const ImpactDirection d = impact_direction(g, std::sqrt(g2), {sx[b], sy[b], sz[b]});
-        if (!(d.g_sigma > 0.0)) continue;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
-        sigma = d.sigma;
-        g_sigma = d.g_sigma;
-      }
-      inelastic_collision(vk, vl, sigma, g_sigma, p);
-      pk[b].set_velocity(vk);
-      pl[b].set_velocity(vl);
-      ++tally[q].collisions;
-      tally[q].twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
-      if constexpr (Shift::active) {  // collide/enskog_shear_shift.hpp
-        const double impulse = p.one_plus_alpha * p.reduced_mass * g_sigma;
-        tally[q].twice_energy_shear_work -= 2.0 * impulse * p.diameter * shift.rate * sigma.x * sigma.y;
-        tally[q].transfer += weighted_dyad(impulse * p.diameter, sigma);
+        test_and_collide(d, b);
       }
     }
   }

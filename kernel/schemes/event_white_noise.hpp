@@ -47,10 +47,6 @@ struct EventTally {
   std::uint64_t majorant_violations = 0; // candidates with |v_i - v_j| above the U_max they were drawn with
 };
 
-/// Relative margin of the comparisons made on squares (thinning, raise_majorant): far above the few
-/// roundings (2^-53 each) between a square and the paper's ratio, so a comparison outside it is certain.
-inline constexpr double rounding_margin = 1e-12;
-
 enum class Thinning { fictitious, real, violation };
 
 /// 001 step 2.8 for a candidate with |v_i - v_j|^2 = g2, drawn with the majorant U_max (squared: U_max2):
