@@ -115,14 +115,21 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     range_k[q] = store_k[q]->size();
     range_l[q] = same_species[q] ? range_k[q] - 1 : store_l[q]->size();
   }
-  // The draws of a batch: its candidates' pairs, particles, acceptance words and directions.
+  // Whether a batch's candidates are screened before they act (below): with the acceptance on the mean,
+  // for a kernel whose mean rate varies.
+  constexpr bool screened = !Shift::active && Kernel::screen_candidates;
+  // A batch's values in whole SIMD registers.
+  constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
+  using Lanes = std::array<double, lanes>;
+  // The draws of a batch: its candidates' pairs, particles, acceptance words and the uniforms of their
+  // directions n; without the screen the directions themselves (with it, only the candidates that pass
+  // the screen get theirs).
   struct Drawn {
     typename Store::Particle pk[batch], pl[batch];
     std::uint8_t qs[batch];
     std::uint32_t accept_word[batch];
-    std::array<double, batch> sx, sy, sz;
+    Lanes dir1, dir2, sx, sy, sz;
   };
-  std::array<double, batch> dir1{}, dir2{};  // initialised: a last, partial batch converts all lanes
   std::array<std::uint64_t, 2 * batch> steps, index;
   steps.fill(state.step);
   // Draws candidates s0 .. s0 + m - 1 into d. They depend on the counters and the pair counts only, never
@@ -153,25 +160,28 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       l += static_cast<std::uint64_t>((one_pair || same_species[q]) & (l >= k));  // one pair: one species
       d.pk[b] = store_k[q]->particle(k);
       d.pl[b] = store_l[q]->particle(l);
-      dir1[b] = uniform_open(w[0][draw]);
-      dir2[b] = uniform_open(w[1][draw]);
+      d.dir1[b] = uniform_open(w[0][draw]);
+      d.dir2[b] = uniform_open(w[1][draw]);
       d.accept_word[b] = w[2][draw];
     }
-    unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(d.sx),
-                 std::span(d.sy), std::span(d.sz));  // the same bits as unit_vector, in SIMD
+    if constexpr (!screened)  // the same bits as unit_vector, in SIMD
+      unit_vectors(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2), std::span(d.sx),
+                   std::span(d.sy), std::span(d.sz));
   };
-  // Candidate b of batch d in full: the acceptance, then the collision (000 sec. 3, steps 2-3).
-  auto test_and_collide = [&](const Drawn& d, std::uint64_t b) {
+  // Candidate b of batch d in full: the acceptance, then the collision (000 sec. 3, steps 2-3). Its
+  // direction n is (nx, ny, nz)[e].
+  auto test_and_collide = [&](const Drawn& d, std::uint64_t b, const Lanes& nx, const Lanes& ny, const Lanes& nz,
+                              std::size_t e) {
     const std::size_t q = one_pair ? 0 : d.qs[b];
     const PairCoefficients& p = one_pair ? only_pair : pairs[q];
     Vec3 vk = d.pk[b].velocity();
     Vec3 vl = d.pl[b].velocity();
-    // n = (sx, sy, sz)[b], uniform on the sphere, is read where it is used: read before the acceptance it
+    // n, uniform on the sphere, is read where it is used: read before the acceptance it
     // holds registers the one-pair loop needs (callgrind, docs/performance.md).
     Vec3 sigma;
     double g_sigma;
     if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
-      sigma = {d.sx[b], d.sy[b], d.sz[b]};
+      sigma = {nx[e], ny[e], nz[e]};
       const Vec3 g = shift.relative_velocity(vk, vl, sigma, p);
       g_sigma = dot(g, sigma);
       if (g_sigma <= 0.0) return;  // Theta(g.sigma): the pair is separating along sigma-hat
@@ -193,7 +203,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       } else if (uniform_open(d.accept_word[b]) * majorant[q] > omega) {
         return;
       }
-      const ImpactDirection id = impact_direction(g, std::sqrt(g2), {d.sx[b], d.sy[b], d.sz[b]});
+      const ImpactDirection id = impact_direction(g, std::sqrt(g2), {nx[e], ny[e], nz[e]});
       if (!(id.g_sigma > 0.0)) return;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
       sigma = id.sigma;
       g_sigma = id.g_sigma;
@@ -219,7 +229,6 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   // and the branch on the acceptance, taken at random about one time in five and mispredicted, is gone.
   // `shared` finds the particles of earlier candidates through a table of batch stamps indexed by
   // record address (two particles can share a slot: a needless full test, never a missed one).
-  constexpr bool screened = !Shift::active && Kernel::screen_candidates;
   static_assert(!screened || batch <= 64, "the screen keeps a batch's outcomes in one 64-bit mask");
   constexpr std::size_t slots_log2 = 14;
   std::array<std::uint8_t, screened ? std::size_t{1} << slots_log2 : 1> seen{};
@@ -227,9 +236,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   auto slot = [](const typename Store::Particle& p) {
     return (reinterpret_cast<std::uintptr_t>(p.address()) >> 4) & ((std::uintptr_t{1} << slots_log2) - 1);
   };
-  // A batch in whole SIMD registers; initialised, as the lanes past a partial batch are screened too.
-  constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
-  std::array<double, lanes> g2{}, threshold{}, prefactor{};
+  std::array<double, lanes> g2{}, threshold{}, prefactor{};  // initialised: lanes past a partial batch
   // Bit b set: candidate b of d needs test_and_collide. Candidate b prefetches candidate b of the next
   // batch (m_next of them), as the loop below does without the screen.
   auto screen = [&](const Drawn& d, std::uint64_t m, const Drawn& next, std::uint64_t m_next) {
@@ -266,7 +273,10 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   // the current batch prefetches the records of candidate b of the next, a batch ahead of their use. The
   // prefetches are spread over the batch: issued a batch's 128 at once, more than the core's outstanding
   // misses, the last ones waited a memory latency (as in the event scheme, docs/performance.md).
-  std::array<Drawn, 2> drawn;
+  std::array<Drawn, 2> drawn{};  // initialised: a last, partial batch converts all lanes
+  std::array<std::uint8_t, batch> which{};
+  Lanes u1{}, u2{};  // initialised: the last register converts lanes past `passed`
+  Lanes nx, ny, nz;
   if (total > 0) {
     draw_batch(drawn[0], 0, std::min(batch, total));
     for (std::uint64_t b = 0; b < std::min(batch, total); ++b) {
@@ -281,15 +291,29 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     Drawn& next = drawn[current ^ 1];
     if (m_next > 0) draw_batch(next, s0 + m, m_next);
     if constexpr (screened) {
-      for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1)
-        test_and_collide(d, static_cast<std::uint64_t>(std::countr_zero(full_test)));
+      // The candidates that passed the screen, in order, and their directions (in SIMD, whole registers)
+      std::size_t passed = 0;
+      for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1) {
+        const auto b = static_cast<std::uint8_t>(std::countr_zero(full_test));
+        which[passed] = b;
+        u1[passed] = d.dir1[b];
+        u2[passed] = d.dir2[b];
+        ++passed;
+      }
+      for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
+        using Register = std::span<double, SimdDouble::size>;
+        unit_vectors(std::span<const double, SimdDouble::size>(&u1[e], SimdDouble::size),
+                     std::span<const double, SimdDouble::size>(&u2[e], SimdDouble::size), Register(&nx[e], SimdDouble::size),
+                     Register(&ny[e], SimdDouble::size), Register(&nz[e], SimdDouble::size));
+      }
+      for (std::size_t e = 0; e < passed; ++e) test_and_collide(d, which[e], nx, ny, nz, e);
     } else {
       for (std::uint64_t b = 0; b < m; ++b) {
         if (b < m_next) {
           next.pk[b].prefetch();
           next.pl[b].prefetch();
         }
-        test_and_collide(d, b);
+        test_and_collide(d, b, d.sx, d.sy, d.sz, b);
       }
     }
   }
