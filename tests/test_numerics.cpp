@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <tuple>
@@ -213,4 +214,52 @@ TEST(Numerics, MaxwellianStartIsTheSameForAnyPartOfTheParticles) {
     EXPECT_NEAR(v.y, width * z1, bound01) << k;
     EXPECT_NEAR(v.z, width * z2, bound2) << k;
   }
+}
+
+TEST(Numerics, SpeciesMomentsAreCompensatedSumsToTwoUlp) {
+  // 1003 particles (not a whole number of SIMD registers) with x velocities of +-10^8 in turn plus a
+  // normal: their sum cancels to the sum of the normals, which a plain sum loses to rounding (about 10^-5
+  // of about 30) and a compensated one keeps. Compared with a long double Neumaier sum of the same terms.
+  const std::size_t n = 1003;
+  const Vec3 centre{0.0, 1000.0, 0.0};
+  SpeciesStore store(n);
+  const RandomStream rng(11, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const RandomBlock r = rng.block(RngPurpose::initial_velocity, 0, 0, k);
+    double z0, z1, z2, z3;
+    standard_normal_pair(uniform_open(r[0]), uniform_open(r[1]), z0, z1);
+    standard_normal_pair(uniform_open(r[2]), uniform_open(r[3]), z2, z3);
+    store.set_velocity(k, Vec3{k % 2 == 0 ? 1e8 : -1e8, 1000.0, 0.0} + Vec3{z0, z1, z2});
+  }
+  struct Exact {
+    long double sum = 0.0L, carry = 0.0L;
+    void add(long double x) {
+      const long double t = sum + x;
+      carry += std::fabs(sum) >= std::fabs(x) ? (sum - t) + x : (x - t) + sum;
+      sum = t;
+    }
+    [[nodiscard]] double value() const { return static_cast<double>(sum + carry); }
+  };
+  Exact s2, s4, s6, px, py, pz;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 v = store.velocity(k);
+    const long double dx = static_cast<long double>(v.x) - centre.x, dy = static_cast<long double>(v.y) - centre.y,
+                      dz = static_cast<long double>(v.z) - centre.z;
+    const long double c2 = dx * dx + dy * dy + dz * dz;
+    s2.add(c2);
+    s4.add(c2 * c2);
+    s6.add(c2 * c2 * c2);
+    px.add(v.x);
+    py.add(v.y);
+    pz.add(v.z);
+  }
+  const SpeciesMoments m = species_moments(store, centre);
+  EXPECT_EQ(m.particles, n);
+  const auto two_ulp = [](double x) { return 2.0 * std::numeric_limits<double>::epsilon() * std::fabs(x); };
+  EXPECT_NEAR(m.sum_c2, s2.value(), two_ulp(s2.value()));
+  EXPECT_NEAR(m.sum_c4, s4.value(), two_ulp(s4.value()));
+  EXPECT_NEAR(m.sum_c6, s6.value(), two_ulp(s6.value()));
+  EXPECT_NEAR(m.sum_c.x, px.value(), two_ulp(px.value()));
+  EXPECT_NEAR(m.sum_c.y, py.value(), two_ulp(py.value()));
+  EXPECT_NEAR(m.sum_c.z, pz.value(), two_ulp(pz.value()));
 }

@@ -16,21 +16,13 @@
 #include <span>
 #include <type_traits>
 
-// GCC 12 warns inside its own AVX-512 headers (the _mm512_undefined_* idiom) wherever xsimd inlines them.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <xsimd/xsimd.hpp>
-#pragma GCC diagnostic pop
-
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
+#include "kernel/core/simd.hpp"
 #include "kernel/core/turn_sincos.hpp"
 #include "kernel/core/vec3.hpp"
 
 namespace granmc {
-
-using SimdDouble = xsimd::batch<double>;  // the widest registers the build targets
 
 namespace detail {
 

@@ -14,14 +14,8 @@
 
 #include <Random123/philox.h>
 
-// GCC 12 warns inside its own AVX-512 headers (the _mm512_undefined_* idiom) wherever xsimd inlines them.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <xsimd/xsimd.hpp>
-#pragma GCC diagnostic pop
-
 #include "kernel/core/rng_ids.hpp"
+#include "kernel/core/simd.hpp"
 
 namespace granmc {
 
@@ -54,7 +48,7 @@ class RandomStream {
     return {r[0], r[1], r[2], r[3]};
   }
 
-// (The intrinsics below are inlined from GCC 12's AVX-512 headers, which warn as above.)
+// (The intrinsics below are inlined from GCC 12's AVX-512 headers, which warn as core/simd.hpp says.)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
