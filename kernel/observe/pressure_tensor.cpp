@@ -5,6 +5,7 @@
 
 #include "kernel/observe/compensated_sum.hpp"
 #include "kernel/observe/gas_observation.hpp"
+#include "kernel/observe/velocity_lanes.hpp"
 
 namespace granmc {
 
@@ -13,18 +14,22 @@ SymTensor reduced_kinetic_pressure(const Scene& scene, const BasicGasState<Real>
   // About the flow velocity (zero to rounding: collisions and the shear map conserve momentum).
   const GasTotals totals = gas_totals(scene, gas_moments(state));
   const Vec3 flow = (1.0 / totals.mass) * totals.momentum;
-  CompensatedSum xx, yy, zz, xy, xz, yz;
+  LaneCompensatedSum xx, yy, zz, xy, xz, yz;  // lane by lane (docs/performance.md)
+  const SimdDouble fx(flow.x), fy(flow.y), fz(flow.z);
   for (std::size_t i = 0; i < state.species.size(); ++i) {
     const double m = scene.species[i].mass;
-    state.species[i].for_each_velocity([&](const Vec3& c) {
-      const SymTensor d = weighted_dyad(m, c - flow);
-      xx.add(d.xx);
-      yy.add(d.yy);
-      zz.add(d.zz);
-      xy.add(d.xy);
-      xz.add(d.xz);
-      yz.add(d.yz);
-    });
+    for_each_velocity_lanes(state.species[i], 0, state.species[i].size(),
+                            [&](const SimdDouble& x, const SimdDouble& y, const SimdDouble& z, const SimdDouble& in_range) {
+                              const SimdDouble w = m * in_range;  // the terms of weighted_dyad(m, c - flow)
+                              const SimdDouble dx = x - fx, dy = y - fy, dz = z - fz;
+                              const SimdDouble wx = w * dx, wy = w * dy, wz = w * dz;
+                              xx.add(wx * dx);
+                              yy.add(wy * dy);
+                              zz.add(wz * dz);
+                              xy.add(wx * dy);
+                              xz.add(wx * dz);
+                              yz.add(wy * dz);
+                            });
   }
   const SymTensor sum{xx.value(), yy.value(), zz.value(), xy.value(), xz.value(), yz.value()};
   return (3.0 / sum.trace()) * sum;
