@@ -8,10 +8,12 @@
 // l != k, block 2 s + 1 for the direction n (words 0, 1) and the acceptance uniform (word 2); acceptance
 // on the mean of omega over sigma-hat, prefactor |g| / 4, then sigma-hat = (g-hat + n) / |g-hat + n|
 // (collide/impact_direction.hpp); candidates
-// are drawn in batches of 64 (Philox over the batch's counters as arrays, directions in SIMD), a batch
-// ahead of their use, and candidate b prefetches the records of candidate b of the next batch; then
-// processed in order. The result is the
-// same bits as collide_step on the same state and seed (checked at the start of bench_effects).
+// are drawn in batches of 64 (Philox over the batch's counters as arrays), a batch ahead of their use;
+// each batch is screened in SIMD (omega of all its candidates, the ones rejected with certainty and
+// sharing no particle with an earlier candidate of the batch left out), and candidate b prefetches the
+// records of candidate b of the next batch; the directions of the candidates that pass the screen in
+// SIMD; then those candidates in order. The result is the same bits as collide_step on the same state
+// and seed (checked at the start of bench_effects).
 //
 // What it leaves out of the generic stage: the pair table (the constants are locals), the interleaving
 // of species pairs (no pair draw, no per-candidate pair lookup), the Kernel template (omega = prefactor
@@ -21,6 +23,7 @@
 // library.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -65,12 +68,13 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   const double prefactor = c.rate_prefactor, one_plus_alpha = c.one_plus_alpha, loss = c.twice_energy_loss;
   double majorant = omega_max;
   HandTally t;
+  static_assert(batch % SimdDouble::size == 0 && batch <= 64);
+  using Lanes = std::array<double, batch>;
   struct Drawn {
     std::uint64_t ks[batch], ls[batch];
     std::uint32_t accept_word[batch];
-    std::array<double, batch> sx, sy, sz;
+    Lanes dir1, dir2;
   };
-  std::array<double, batch> dir1{}, dir2{};  // initialised: a last, partial batch converts all lanes
   std::array<std::uint64_t, 2 * batch> steps, index;
   steps.fill(step);
   auto draw_batch = [&](Drawn& d, std::uint64_t s0, std::uint64_t m) {
@@ -83,14 +87,18 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       l += static_cast<std::uint64_t>(l >= k);  // uniform over the other n - 1
       d.ks[b] = k;
       d.ls[b] = l;
-      dir1[b] = uniform_open(w[0][2 * b + 1]);
-      dir2[b] = uniform_open(w[1][2 * b + 1]);
+      d.dir1[b] = uniform_open(w[0][2 * b + 1]);
+      d.dir2[b] = uniform_open(w[1][2 * b + 1]);
       d.accept_word[b] = w[2][2 * b + 1];
     }
-    unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(d.sx),
-                 std::span(d.sy), std::span(d.sz));
   };
-  std::array<Drawn, 2> drawn;
+  // The screen's table of batch stamps, by particle index (two particles can share a slot).
+  constexpr std::uint64_t slots = std::uint64_t{1} << 14;
+  std::array<std::uint8_t, slots> seen{};
+  std::uint8_t stamp = 0;
+  Lanes g2s{}, threshold{}, omega{}, u1{}, u2{}, sx, sy, sz;
+  std::array<std::uint8_t, batch> which;
+  std::array<Drawn, 2> drawn{};
   if (candidates > 0) {
     draw_batch(drawn[0], 0, std::min(batch, candidates));
     for (std::uint64_t b = 0; b < std::min(batch, candidates); ++b) {
@@ -104,30 +112,59 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
     const Drawn& d = drawn[current];
     Drawn& next = drawn[current ^ 1];
     if (m_next > 0) draw_batch(next, s0 + m, m_next);
-    const auto& ks = d.ks;
-    const auto& ls = d.ls;
-    const auto& accept_word = d.accept_word;
-    const auto& sx = d.sx;
-    const auto& sy = d.sy;
-    const auto& sz = d.sz;
-    for (std::uint64_t b = 0; b < m; ++b) {
+    if (++stamp == 0) {
+      seen.fill(0);
+      stamp = 1;
+    }
+    std::uint64_t full_test = 0;
+    for (std::uint64_t b = 0; b < m; ++b) {  // the screen
       if (b < m_next) {
         __builtin_prefetch(v + next.ks[b], 1, 3);
         __builtin_prefetch(v + next.ls[b], 1, 3);
       }
-      HandRecord& a = v[ks[b]];
-      HandRecord& e = v[ls[b]];
+      const HandRecord& a = v[d.ks[b]];
+      const HandRecord& e = v[d.ls[b]];
       const double gx = a.x - e.x, gy = a.y - e.y, gz = a.z - e.z;
+      g2s[b] = gx * gx + gy * gy + gz * gz;
+      threshold[b] = uniform_open(d.accept_word[b]) * majorant;
+      const std::uint64_t sk = d.ks[b] & (slots - 1), sl = d.ls[b] & (slots - 1);
+      full_test |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
+      seen[sk] = stamp;
+      seen[sl] = stamp;
+    }
+    for (std::uint64_t k = 0; k < batch; k += SimdDouble::size)
+      (prefactor * (0.25 * xsimd::sqrt(SimdDouble::load_unaligned(&g2s[k]))) * (1.0 + rounding_margin))
+          .store_unaligned(&omega[k]);
+    for (std::uint64_t b = 0; b < m; ++b) full_test |= static_cast<std::uint64_t>(!(threshold[b] > omega[b])) << b;
+    std::size_t passed = 0;
+    for (; full_test != 0; full_test &= full_test - 1) {
+      const auto b = static_cast<std::uint8_t>(std::countr_zero(full_test));
+      which[passed] = b;
+      u1[passed] = d.dir1[b];
+      u2[passed] = d.dir2[b];
+      ++passed;
+    }
+    for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
+      using Register = std::span<double, SimdDouble::size>;
+      unit_vectors(std::span<const double, SimdDouble::size>(&u1[e], SimdDouble::size),
+                   std::span<const double, SimdDouble::size>(&u2[e], SimdDouble::size), Register(&sx[e], SimdDouble::size),
+                   Register(&sy[e], SimdDouble::size), Register(&sz[e], SimdDouble::size));
+    }
+    for (std::size_t e = 0; e < passed; ++e) {  // the full test, in order
+      const std::uint64_t b = which[e];
+      HandRecord& a = v[d.ks[b]];
+      HandRecord& f = v[d.ls[b]];
+      const double gx = a.x - f.x, gy = a.y - f.y, gz = a.z - f.z;
       const double g2 = gx * gx + gy * gy + gz * gz;
-      const double omega = prefactor * (0.25 * std::sqrt(g2));  // the mean of prefactor Theta(g.sigma) g.sigma
-      if (omega > majorant) {
-        majorant = omega;  // majorant exceeded: accept and update (000 sec. 3)
+      const double omega_b = prefactor * (0.25 * std::sqrt(g2));  // the mean of prefactor Theta(g.sigma) g.sigma
+      if (omega_b > majorant) {
+        majorant = omega_b;  // majorant exceeded: accept and update (000 sec. 3)
         ++t.majorant_updates;
-      } else if (uniform_open(accept_word[b]) * majorant > omega) {
+      } else if (uniform_open(d.accept_word[b]) * majorant > omega_b) {
         continue;
       }
       const double g_norm = std::sqrt(g2);  // sigma-hat along g-hat + n
-      const double hx = gx + g_norm * sx[b], hy = gy + g_norm * sy[b], hz = gz + g_norm * sz[b];
+      const double hx = gx + g_norm * sx[e], hy = gy + g_norm * sy[e], hz = gz + g_norm * sz[e];
       const double inverse = 1.0 / std::sqrt(hx * hx + hy * hy + hz * hz);
       const Vec3 s{inverse * hx, inverse * hy, inverse * hz};
       const double g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
@@ -136,9 +173,9 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       a.x -= h * s.x;                                     // 000 eq. (14)
       a.y -= h * s.y;
       a.z -= h * s.z;
-      e.x += h * s.x;  // 000 eq. (15)
-      e.y += h * s.y;
-      e.z += h * s.z;
+      f.x += h * s.x;  // 000 eq. (15)
+      f.y += h * s.y;
+      f.z += h * s.z;
       ++t.collisions;
       t.twice_energy_loss += loss * g_sigma * g_sigma;
     }
