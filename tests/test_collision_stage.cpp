@@ -30,11 +30,11 @@ struct Gas {
     tallies.resize(pairs.size());
   }
 
-  template <std::uint64_t batch, class Kernel = HardSphere>
-  void run(int steps) {
+  template <std::uint64_t batch, class Kernel = HardSphere, class Shift = NoCollisionShift>
+  void run(int steps, const Shift& shift = {}) {
     const std::vector<std::uint64_t> candidates{1001, 400, 300, 77};  // interleaved at random
     for (int s = 0; s < steps; ++s, ++state.step)
-      collide_step<Kernel, batch>(state, pairs, omega_max, candidates, rng, tallies);
+      collide_step<Kernel, batch, Shift>(state, pairs, omega_max, candidates, rng, tallies, Kernel{}, shift);
   }
 };
 
@@ -48,6 +48,7 @@ void expect_same_bits(const Gas& one, const Gas& other) {
     EXPECT_EQ(one.tallies[q].collisions, other.tallies[q].collisions);
     EXPECT_EQ(one.tallies[q].majorant_updates, other.tallies[q].majorant_updates);
     EXPECT_EQ(one.tallies[q].twice_energy_loss, other.tallies[q].twice_energy_loss);
+    EXPECT_EQ(one.tallies[q].twice_energy_shear_work, other.tallies[q].twice_energy_shear_work);
   }
   EXPECT_EQ(one.omega_max, other.omega_max);
   for (std::size_t i = 0; i < 2; ++i)
@@ -88,4 +89,19 @@ TEST(CollisionStage, TheScreenLeavesOutOnlyRejectedCandidates) {
   high_full.run<64, HardSphereUnscreened>(5);
   EXPECT_GT(high.tallies[0].collisions, 10u);
   expect_same_bits(high, high_full);
+}
+
+TEST(CollisionStage, TheScreenLeavesOutOnlyRejectedCandidatesWithTheEnskogShift) {
+  // The paper's order (sigma-hat first, omega = prefactor Theta(g.sigma) g.sigma with the shifted g): half
+  // the candidates separate along sigma-hat, and the screen must leave out only those and the rejected.
+  const EnskogShearShift shift{0.7};
+  Gas screened, full;
+  screened.run<64, HardSphere, EnskogShearShift>(5, shift);
+  full.run<64, HardSphereUnscreened, EnskogShearShift>(5, shift);
+  EXPECT_GT(screened.tallies[0].collisions, 10u);
+  EXPECT_NE(screened.tallies[0].twice_energy_shear_work, 0.0);
+  expect_same_bits(screened, full);
+  Gas one;
+  one.run<1, HardSphere, EnskogShearShift>(5, shift);
+  expect_same_bits(one, screened);
 }

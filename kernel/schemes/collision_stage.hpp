@@ -29,11 +29,14 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 
 #include "kernel/collide/enskog_shear_shift.hpp"
+#include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
@@ -115,15 +118,16 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     range_k[q] = store_k[q]->size();
     range_l[q] = same_species[q] ? range_k[q] - 1 : store_l[q]->size();
   }
-  // Whether a batch's candidates are screened before they act (below): with the acceptance on the mean,
-  // for a kernel whose mean rate varies.
-  constexpr bool screened = !Shift::active && Kernel::screen_candidates;
+  // Whether a batch's candidates are screened before they act (below): for a kernel whose rate varies.
+  // With the acceptance on the mean only the candidates that pass the screen need a direction.
+  constexpr bool screened = Kernel::screen_candidates;
+  constexpr bool directions_for_all = !screened || Shift::active;
   // A batch's values in whole SIMD registers.
   constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
   using Lanes = std::array<double, lanes>;
   // The draws of a batch: its candidates' pairs, particles, acceptance words and the uniforms of their
-  // directions n; without the screen the directions themselves (with it, only the candidates that pass
-  // the screen get theirs).
+  // directions n; the directions themselves where every candidate needs one (with the acceptance on the
+  // mean and the screen, only the candidates that pass it get theirs).
   struct Drawn {
     typename Store::Particle pk[batch], pl[batch];
     std::uint8_t qs[batch];
@@ -164,7 +168,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       d.dir2[b] = uniform_open(w[1][draw]);
       d.accept_word[b] = w[2][draw];
     }
-    if constexpr (!screened)  // the same bits as unit_vector, in SIMD
+    if constexpr (directions_for_all)  // the same bits as unit_vector, in SIMD
       unit_vectors(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2), std::span(d.sx),
                    std::span(d.sy), std::span(d.sz));
   };
@@ -219,16 +223,20 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       tally[q].transfer += weighted_dyad(impulse * p.diameter, sigma);
     }
   };
-  // The screen (acceptance on the mean, a kernel whose mean rate varies): before batch d's candidates act,
-  // all of them are tested at once on the velocities as they are then, and only those it cannot reject
-  // go through test_and_collide, in order. A candidate is left out only if it is rejected with
-  // certainty: u omega_max > omega (1 + rounding_margin), omega computed in SIMD (a few ulp from the
-  // scalar omega; omega_max only grows within a batch, which keeps a rejection a rejection), and neither
-  // of its particles belongs to an earlier candidate of the batch (whose collision could have changed
-  // it). So every candidate does what it did in sequence, the same bits (tests/test_collision_stage.cpp),
-  // and the branch on the acceptance, taken at random about one time in five and mispredicted, is gone.
-  // `shared` finds the particles of earlier candidates through a table of batch stamps indexed by
-  // record address (two particles can share a slot: a needless full test, never a missed one).
+  // The screen (a kernel whose rate varies): before batch d's candidates act, all of them are tested at
+  // once on the velocities as they are then, and only those it cannot reject go through
+  // test_and_collide, in order. A candidate is left out only if it is rejected with certainty,
+  // u omega_max > omega_hi, and neither of its particles belongs to an earlier candidate of the batch
+  // (whose collision could have changed it). omega_hi is an upper bound of the omega test_and_collide
+  // computes: with the acceptance on the mean omega (1 + rounding_margin), omega computed in SIMD (a few
+  // ulp from the scalar omega); with the Enskog shift (hard spheres, omega = prefactor g.sigma, zero
+  // when g.sigma <= 0) prefactor (g.sigma + rounding_margin sum_c |g_c sigma_c|) (1 + rounding_margin),
+  // which covers another rounding of the dot product. omega_max only grows within a batch, which keeps a
+  // rejection a rejection. So every candidate does what it did in sequence, the same bits
+  // (tests/test_collision_stage.cpp), and the branches on the acceptance (and on the sign of g.sigma),
+  // taken at random and mispredicted, are gone.
+  // `seen` finds the particles of earlier candidates: a table of batch stamps indexed by record address
+  // (two particles can share a slot: a needless full test, never a missed one).
   static_assert(!screened || batch <= 64, "the screen keeps a batch's outcomes in one 64-bit mask");
   constexpr std::size_t slots_log2 = 14;
   std::array<std::uint8_t, screened ? std::size_t{1} << slots_log2 : 1> seen{};
@@ -236,7 +244,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   auto slot = [](const typename Store::Particle& p) {
     return (reinterpret_cast<std::uintptr_t>(p.address()) >> 4) & ((std::uintptr_t{1} << slots_log2) - 1);
   };
-  std::array<double, lanes> g2{}, threshold{}, prefactor{};  // initialised: lanes past a partial batch
+  Lanes g2{}, threshold{}, prefactor{}, omega{};  // initialised: lanes past a partial batch
   // Bit b set: candidate b of d needs test_and_collide. Candidate b prefetches candidate b of the next
   // batch (m_next of them), as the loop below does without the screen.
   auto screen = [&](const Drawn& d, std::uint64_t m, const Drawn& next, std::uint64_t m_next) {
@@ -252,19 +260,28 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
           next.pl[b].prefetch();
         }
         const std::size_t q = one_pair ? 0 : d.qs[b];
-        g2[b] = norm2(d.pk[b].velocity() - d.pl[b].velocity());
+        const PairCoefficients& p = one_pair ? only_pair : pairs[q];
         threshold[b] = uniform_open(d.accept_word[b]) * majorant[q];
-        prefactor[b] = one_pair ? only_pair.rate_prefactor : pairs[q].rate_prefactor;
+        if constexpr (Shift::active) {
+          static_assert(std::is_same_v<Kernel, HardSphere>, "the Enskog shift runs with hard spheres (schemes/dispatch.cpp)");
+          const Vec3 sigma{d.sx[b], d.sy[b], d.sz[b]};
+          const Vec3 g = shift.relative_velocity(d.pk[b].velocity(), d.pl[b].velocity(), sigma, p);
+          const double terms = std::abs(g.x * sigma.x) + std::abs(g.y * sigma.y) + std::abs(g.z * sigma.z);
+          omega[b] = p.rate_prefactor * (dot(g, sigma) + rounding_margin * terms) * (1.0 + rounding_margin);
+        } else {
+          g2[b] = norm2(d.pk[b].velocity() - d.pl[b].velocity());
+          prefactor[b] = p.rate_prefactor;
+        }
         const std::size_t sk = slot(d.pk[b]), sl = slot(d.pl[b]);
         full_test |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
         seen[sk] = stamp;
         seen[sl] = stamp;
       }
-      std::array<double, lanes> omega;
-      for (std::size_t k = 0; k < lanes; k += SimdDouble::size)
-        (SimdDouble::load_unaligned(&prefactor[k]) * kernel.mean_rate(SimdDouble::load_unaligned(&g2[k])) *
-         (1.0 + rounding_margin))
-            .store_unaligned(&omega[k]);
+      if constexpr (!Shift::active)
+        for (std::size_t k = 0; k < lanes; k += SimdDouble::size)
+          (SimdDouble::load_unaligned(&prefactor[k]) * kernel.mean_rate(SimdDouble::load_unaligned(&g2[k])) *
+           (1.0 + rounding_margin))
+              .store_unaligned(&omega[k]);
       for (std::uint64_t b = 0; b < m; ++b) full_test |= static_cast<std::uint64_t>(!(threshold[b] > omega[b])) << b;
     }
     return full_test;
@@ -290,7 +307,12 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     const Drawn& d = drawn[current];
     Drawn& next = drawn[current ^ 1];
     if (m_next > 0) draw_batch(next, s0 + m, m_next);
-    if constexpr (screened) {
+    if constexpr (screened && Shift::active) {
+      for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1) {
+        const auto b = static_cast<std::uint64_t>(std::countr_zero(full_test));
+        test_and_collide(d, b, d.sx, d.sy, d.sz, b);
+      }
+    } else if constexpr (screened) {
       // The candidates that passed the screen, in order, and their directions (in SIMD, whole registers)
       std::size_t passed = 0;
       for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1) {
@@ -331,10 +353,11 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
 ///
 /// Candidates are drawn in batches of `batch`: the random blocks, pairs and indices of a batch first, a
 /// batch ahead of their use, with the two velocity records of each candidate prefetched while the batch
-/// before it collides; then the candidates one by one in order. Two candidates that share a particle
-/// therefore still act in sequence, and the result is the same for every batch size
-/// (tests/test_collision_stage.cpp); the batches only let the memory loads of different candidates
-/// overlap (perf/bench_collisions.cpp, docs/performance.md).
+/// before it collides; then the candidates one by one in order (with the acceptance on the mean, only
+/// those a SIMD screen of the batch cannot reject with certainty). Two candidates that share a particle
+/// therefore still act in sequence, and the result is the same for every batch size and with or without
+/// the screen (tests/test_collision_stage.cpp); the batches only let the memory loads of different
+/// candidates overlap and the acceptance run in SIMD (perf/bench_collisions.cpp, docs/performance.md).
 template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift, class Real = double>
 void collide_step(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                   std::span<const std::uint64_t> candidates, const RandomStream& rng,
