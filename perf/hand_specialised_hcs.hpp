@@ -23,7 +23,6 @@
 // library.
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -96,7 +95,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   constexpr std::uint64_t slots = std::uint64_t{1} << 14;
   std::array<std::uint8_t, slots> seen{};
   std::uint8_t stamp = 0;
-  Lanes g2s{}, threshold{}, omega{}, u1{}, u2{}, sx, sy, sz;
+  Lanes g2s{}, threshold{}, omega{}, sx, sy, sz;
   std::array<std::uint8_t, batch> which;
   std::array<Drawn, 2> drawn{};
   if (candidates > 0) {
@@ -136,20 +135,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       (prefactor * (0.25 * xsimd::sqrt(SimdDouble::load_unaligned(&g2s[k]))) * (1.0 + rounding_margin))
           .store_unaligned(&omega[k]);
     for (std::uint64_t b = 0; b < m; ++b) full_test |= static_cast<std::uint64_t>(!(threshold[b] > omega[b])) << b;
-    std::size_t passed = 0;
-    for (; full_test != 0; full_test &= full_test - 1) {
-      const auto b = static_cast<std::uint8_t>(std::countr_zero(full_test));
-      which[passed] = b;
-      u1[passed] = d.dir1[b];
-      u2[passed] = d.dir2[b];
-      ++passed;
-    }
-    for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
-      using Register = std::span<double, SimdDouble::size>;
-      unit_vectors(std::span<const double, SimdDouble::size>(&u1[e], SimdDouble::size),
-                   std::span<const double, SimdDouble::size>(&u2[e], SimdDouble::size), Register(&sx[e], SimdDouble::size),
-                   Register(&sy[e], SimdDouble::size), Register(&sz[e], SimdDouble::size));
-    }
+    const std::size_t passed = selected_unit_vectors(full_test, d.dir1, d.dir2, which, sx, sy, sz);
     for (std::size_t e = 0; e < passed; ++e) {  // the full test, in order
       const std::uint64_t b = which[e];
       HandRecord& a = v[d.ks[b]];

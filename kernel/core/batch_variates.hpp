@@ -10,6 +10,7 @@
 // all three), a relative error of 5e-15 in an acceptance probability.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -123,6 +124,31 @@ inline void unit_vectors(std::span<const double, N> u1, std::span<const double, 
     y[k] = e.y;
     z[k] = e.z;
   }
+}
+
+/// The directions of the lanes selected by the set bits of `selected` (N <= 64), in increasing order:
+/// lane which[e] gets (x, y, z)[e], the direction unit_vectors gives its uniforms u1, u2. Returns how many
+/// lanes were selected; the SIMD work is for those only, in whole registers (a collision stage whose
+/// screen passes a fifth of its candidates converts a fifth of their directions).
+template <std::size_t N>
+std::size_t selected_unit_vectors(std::uint64_t selected, const std::array<double, N>& u1,
+                                  const std::array<double, N>& u2, std::array<std::uint8_t, N>& which,
+                                  std::array<double, N>& x, std::array<double, N>& y, std::array<double, N>& z) noexcept {
+  static_assert(N <= 64 && N % SimdDouble::size == 0, "one 64-bit mask, whole registers");
+  constexpr std::size_t w = SimdDouble::size;
+  std::array<double, N> c1, c2;  // the selected uniforms, packed
+  std::size_t count = 0;
+  for (; selected != 0; selected &= selected - 1, ++count) {
+    const auto k = static_cast<std::uint8_t>(std::countr_zero(selected));
+    which[count] = k;
+    c1[count] = u1[k];
+    c2[count] = u2[k];
+  }
+  for (std::size_t k = count; k % w != 0; ++k) c1[k] = c2[k] = 0.5;  // the last register's unused lanes
+  for (std::size_t e = 0; e < count; e += w)
+    unit_vectors(std::span<const double, w>(&c1[e], w), std::span<const double, w>(&c2[e], w),
+                 std::span<double, w>(&x[e], w), std::span<double, w>(&y[e], w), std::span<double, w>(&z[e], w));
+  return count;
 }
 
 /// Standard normal vectors for N consecutive particles: particle first + k gets the block (purpose, sub,

@@ -291,8 +291,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   // prefetches are spread over the batch: issued a batch's 128 at once, more than the core's outstanding
   // misses, the last ones waited a memory latency (as in the event scheme, docs/performance.md).
   std::array<Drawn, 2> drawn{};  // initialised: a last, partial batch converts all lanes
-  std::array<std::uint8_t, batch> which{};
-  Lanes u1{}, u2{};  // initialised: the last register converts lanes past `passed`
+  std::array<std::uint8_t, lanes> which;
   Lanes nx, ny, nz;
   if (total > 0) {
     draw_batch(drawn[0], 0, std::min(batch, total));
@@ -313,21 +312,8 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
         test_and_collide(d, b, d.sx, d.sy, d.sz, b);
       }
     } else if constexpr (screened) {
-      // The candidates that passed the screen, in order, and their directions (in SIMD, whole registers)
-      std::size_t passed = 0;
-      for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1) {
-        const auto b = static_cast<std::uint8_t>(std::countr_zero(full_test));
-        which[passed] = b;
-        u1[passed] = d.dir1[b];
-        u2[passed] = d.dir2[b];
-        ++passed;
-      }
-      for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
-        using Register = std::span<double, SimdDouble::size>;
-        unit_vectors(std::span<const double, SimdDouble::size>(&u1[e], SimdDouble::size),
-                     std::span<const double, SimdDouble::size>(&u2[e], SimdDouble::size), Register(&nx[e], SimdDouble::size),
-                     Register(&ny[e], SimdDouble::size), Register(&nz[e], SimdDouble::size));
-      }
+      // The candidates that passed the screen, in order, and their directions
+      const std::size_t passed = selected_unit_vectors(screen(d, m, next, m_next), d.dir1, d.dir2, which, nx, ny, nz);
       for (std::size_t e = 0; e < passed; ++e) test_and_collide(d, which[e], nx, ny, nz, e);
     } else {
       for (std::uint64_t b = 0; b < m; ++b) {
