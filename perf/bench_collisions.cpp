@@ -230,20 +230,27 @@ void granmc_draws(benchmark::State& bs) {
   std::uint64_t step = 0, candidates = 0;
   std::array<double, batch> dir1{}, dir2{}, sx, sy, sz, accept;
   std::array<std::uint64_t, batch> ks, ls;
+  std::array<std::uint32_t, batch> range_k, range_l;
+  range_k.fill(static_cast<std::uint32_t>(n));
+  range_l.fill(static_cast<std::uint32_t>(n - 1));
   std::array<std::uint64_t, 2 * batch> steps, index;
   for (auto _ : bs) {
     double sink = 0.0;
     steps.fill(step);
     for (std::uint64_t s0 = 0; s0 < kCandidatesPerIteration; s0 += batch) {
-      for (std::uint64_t k = 0; k < 2 * batch; ++k) index[k] = 2 * s0 + k;
+      for (std::uint64_t b = 0; b < batch; ++b) {  // as the stage: block 2s in lane b, 2s + 1 in lane batch + b
+        index[b] = 2 * (s0 + b);
+        index[batch + b] = 2 * (s0 + b) + 1;
+      }
       const RandomBlocks<2 * batch> blocks = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
       const auto& w = blocks.word;
+      auto pick = [&](std::size_t word) { return std::span<const std::uint32_t, batch>(w[word].data(), batch); };
+      uniform_indices(pick(0), pick(1), range_k, ks);
+      uniform_indices(pick(2), pick(3), range_l, ls);
       for (std::uint64_t b = 0; b < batch; ++b) {
-        ks[b] = uniform_index(w[0][2 * b], w[1][2 * b], n);
-        ls[b] = uniform_index(w[2][2 * b], w[3][2 * b], n - 1);
-        dir1[b] = uniform_open(w[0][2 * b + 1]);
-        dir2[b] = uniform_open(w[1][2 * b + 1]);
-        accept[b] = uniform_open(w[2][2 * b + 1]);
+        dir1[b] = uniform_open(w[0][batch + b]);
+        dir2[b] = uniform_open(w[1][batch + b]);
+        accept[b] = uniform_open(w[2][batch + b]);
       }
       unit_vectors(std::span<const double, batch>(dir1), std::span<const double, batch>(dir2), std::span(sx),
                    std::span(sy), std::span(sz));

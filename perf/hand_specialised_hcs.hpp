@@ -8,7 +8,8 @@
 // l != k, block 2 s + 1 for the direction n (words 0, 1) and the acceptance uniform (word 2); acceptance
 // on the mean of omega over sigma-hat, prefactor |g| / 4, then sigma-hat = (g-hat + n) / |g-hat + n|
 // (collide/impact_direction.hpp); candidates
-// are drawn in batches of 64 (Philox over the batch's counters as arrays), a batch ahead of their use;
+// are drawn in batches of 64 (Philox over the batch's counters as arrays, the indices lane by lane), a
+// batch ahead of their use;
 // each batch is screened in SIMD (omega of all its candidates, the ones rejected with certainty and
 // sharing no particle with an earlier candidate of the batch left out), and candidate b prefetches the
 // records of candidate b of the next batch; the directions of the candidates that pass the screen in
@@ -60,7 +61,7 @@ struct HandTally {
   double twice_energy_loss = 0.0;
 };
 
-/// The collision stage of step `step`: `candidates` candidate pairs among the n records of v.
+/// The collision stage of step `step`: `candidates` candidate pairs among the n < 2^32 records of v.
 template <std::uint64_t batch = 64>
 HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::uint64_t candidates,
                        const RandomStream& rng, std::uint64_t step, const HandConstants& c) noexcept {
@@ -76,19 +77,29 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   };
   std::array<std::uint64_t, 2 * batch> steps, index;
   steps.fill(step);
+  std::array<std::uint32_t, batch> range_k, range_l;  // n < 2^32 (hand_collide's precondition)
+  range_k.fill(static_cast<std::uint32_t>(n));
+  range_l.fill(static_cast<std::uint32_t>(n - 1));
+  std::array<std::uint64_t, batch> ls;
   auto draw_batch = [&](Drawn& d, std::uint64_t s0, std::uint64_t m) {
-    for (std::uint64_t k = 0; k < 2 * batch; ++k) index[k] = 2 * s0 + k;
+    for (std::uint64_t b = 0; b < batch; ++b) {  // block 2s in lane b, block 2s + 1 in lane batch + b
+      index[b] = 2 * (s0 + b);
+      index[batch + b] = 2 * (s0 + b) + 1;
+    }
     const RandomBlocks<2 * batch> blocks = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
     const auto& w = blocks.word;
+    auto pick = [&](std::size_t word) { return std::span<const std::uint32_t, batch>(w[word].data(), batch); };
+    std::array<std::uint64_t, batch> ks;
+    uniform_indices(pick(0), pick(1), range_k, ks);
+    uniform_indices(pick(2), pick(3), range_l, ls);
     for (std::uint64_t b = 0; b < m; ++b) {
-      const std::uint64_t k = uniform_index(w[0][2 * b], w[1][2 * b], n);
-      std::uint64_t l = uniform_index(w[2][2 * b], w[3][2 * b], n - 1);
-      l += static_cast<std::uint64_t>(l >= k);  // uniform over the other n - 1
-      d.ks[b] = k;
-      d.ls[b] = l;
-      d.dir1[b] = uniform_open(w[0][2 * b + 1]);
-      d.dir2[b] = uniform_open(w[1][2 * b + 1]);
-      d.accept_word[b] = w[2][2 * b + 1];
+      d.ks[b] = ks[b];
+      d.ls[b] = ls[b] + static_cast<std::uint64_t>(ls[b] >= ks[b]);  // uniform over the other n - 1
+    }
+    for (std::uint64_t b = 0; b < batch; ++b) {
+      d.dir1[b] = uniform_open(w[0][batch + b]);
+      d.dir2[b] = uniform_open(w[1][batch + b]);
+      d.accept_word[b] = w[2][batch + b];
     }
   };
   // The screen's table of batch stamps, by particle index (two particles can share a slot).

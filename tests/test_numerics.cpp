@@ -186,6 +186,30 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
               worst_log, worst_normal, worst_power);
 }
 
+TEST(Numerics, IndicesLaneByLaneAreTheScalarIndices) {
+  // uniform_indices (two 32-bit products) against uniform_index (one 128-bit product) for 2^20 word pairs
+  // from Philox and ranges from 1 to 2^32 - 1, with the extreme words 0 and 2^32 - 1 in every batch: every
+  // index equal, and every index below its range.
+  constexpr std::size_t lanes = 64;
+  const RandomStream rng(17, 0);
+  constexpr std::array<std::uint32_t, 8> edge_ranges = {1u, 2u, 3u, 10u, 99'999u, 10'000'000u, 0x80000001u, 0xFFFFFFFFu};
+  for (std::uint64_t chunk = 0; chunk < (1u << 14); ++chunk) {
+    std::array<std::uint32_t, lanes> hi, lo, n;
+    for (std::size_t k = 0; k < lanes; ++k) {
+      const RandomBlock r = rng.block(RngPurpose::initial_velocity, 0, chunk, k);
+      hi[k] = k == 0 ? 0u : k == 1 ? 0xFFFFFFFFu : r[0];
+      lo[k] = k == 0 ? 0u : k == 1 ? 0xFFFFFFFFu : r[1];
+      n[k] = k < 2 * edge_ranges.size() ? edge_ranges[k % edge_ranges.size()] : std::max(r[2] >> (r[3] % 32), 1u);
+    }
+    std::array<std::uint64_t, lanes> out;
+    uniform_indices(std::span<const std::uint32_t, lanes>(hi), std::span<const std::uint32_t, lanes>(lo), n, out);
+    for (std::size_t k = 0; k < lanes; ++k) {
+      ASSERT_EQ(out[k], uniform_index(hi[k], lo[k], n[k])) << "words " << hi[k] << ", " << lo[k] << ", range " << n[k];
+      ASSERT_LT(out[k], n[k]);
+    }
+  }
+}
+
 TEST(Numerics, MaxwellianStartIsTheSameForAnyPartOfTheParticles) {
   // schemes/initial_state.cpp: particle first + k gets the normals of its own block whatever batch it is
   // computed in, so a part filled from `first` (a rank of a spread system) is the same bits as that part

@@ -71,6 +71,19 @@ constexpr void require_whole_registers() noexcept {
 
 }  // namespace detail
 
+/// out[k] = uniform_index(hi[k], lo[k], n[k]) for ranges n[k] < 2^32: the same values, from two 32 x 32 ->
+/// 64-bit products, which vectorize (the 64 x 64 -> 128-bit product of uniform_index does not):
+///   floor((hi 2^32 + lo) n / 2^64) = floor((hi n + floor(lo n / 2^32)) / 2^32),
+/// where hi n + floor(lo n / 2^32) < 2^32 n < 2^64, so nothing overflows.
+template <std::size_t N>
+inline void uniform_indices(std::span<const std::uint32_t, N> hi, std::span<const std::uint32_t, N> lo,
+                            const std::array<std::uint32_t, N>& n, std::array<std::uint64_t, N>& out) noexcept {
+  for (std::size_t k = 0; k < N; ++k) {
+    const std::uint64_t range = n[k];
+    out[k] = (hi[k] * range + ((lo[k] * range) >> 32)) >> 32;
+  }
+}
+
 /// u := -log(u) for u in (0, 1): exponential variates with mean 1.
 template <std::size_t N>
 inline void negative_log_in_place(std::span<double, N> u) noexcept {

@@ -136,37 +136,67 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   };
   std::array<std::uint64_t, 2 * batch> steps, index;
   steps.fill(state.step);
+  // The candidates' particle indices from their ranges lane by lane (uniform_indices) when every range is
+  // below 2^32, else one by one (uniform_index): the same values.
+  bool narrow = true;
+  for (std::size_t q = 0; q < n_pairs; ++q) narrow = narrow && std::max(range_k[q], range_l[q]) < (std::uint64_t{1} << 32);
+  std::array<std::uint32_t, batch> ranges_k{}, ranges_l{};
+  if (one_pair && narrow) {
+    ranges_k.fill(static_cast<std::uint32_t>(range_k[0]));
+    ranges_l.fill(static_cast<std::uint32_t>(range_l[0]));
+  }
+  std::array<std::uint64_t, batch> ks, ls;
   // Draws candidates s0 .. s0 + m - 1 into d. They depend on the counters and the pair counts only, never
   // on a velocity, so a batch can be drawn before the one in front of it has collided.
   auto draw_batch = [&](Drawn& d, std::uint64_t s0, std::uint64_t m) {
-    // Blocks 2s and 2s + 1 of the batch's candidates s, all at once (lanes 2b and 2b + 1; past the end of
-    // the step in the last batch, unused).
-    for (std::uint64_t k = 0; k < 2 * batch; ++k) index[k] = 2 * s0 + k;
+    // Blocks 2s (lane b) and 2s + 1 (lane batch + b) of the batch's candidates s = s0 + b, all at once,
+    // each kind in consecutive lanes so that its words convert in SIMD (past the end of the step in the
+    // last batch, unused).
+    for (std::uint64_t b = 0; b < batch; ++b) {
+      index[b] = 2 * (s0 + b);
+      index[batch + b] = 2 * (s0 + b) + 1;
+    }
     const RandomBlocks<2 * batch> blocks = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
     const auto& w = blocks.word;
-    for (std::uint64_t b = 0; b < m; ++b) {
-      const std::uint64_t s = s0 + b, pick = 2 * b, draw = 2 * b + 1;
-      std::size_t q = 0;
-      if constexpr (!one_pair) {  // the next candidate's pair, without replacement: a uniformly random interleaving
-        const double r = uniform_open(w[3][draw]) * static_cast<double>(total - s);
+    auto pick = [&](std::size_t word) { return std::span<const std::uint32_t, batch>(w[word].data(), batch); };
+    const auto draw = [](std::uint64_t b) { return batch + b; };
+    if constexpr (!one_pair) {
+      for (std::uint64_t b = 0; b < m; ++b) {  // the next candidate's pair, without replacement: a uniformly random interleaving
+        const double r = uniform_open(w[3][draw(b)]) * static_cast<double>(total - (s0 + b));
         // q = the number of cumulative counts <= r, without branches (a loop here mispredicted 0.86 times
         // per candidate, callgrind, docs/performance.md). r < total - s = candidates left, so q is a pair
         // with candidates left. The same q as subtracting the counts from r one by one: r < 2^53, so r minus
         // an integer below it is exact.
+        std::size_t q = 0;
         for (std::size_t k = 0; k + 1 < max_pairs; ++k) q += static_cast<std::size_t>(r >= static_cast<double>(cumulative[k]));
         for (std::size_t k = 0; k + 1 < max_pairs; ++k) cumulative[k] -= static_cast<std::int64_t>(k >= q);
         d.qs[b] = static_cast<std::uint8_t>(q);
+        ranges_k[b] = static_cast<std::uint32_t>(range_k[q]);  // used only when narrow
+        ranges_l[b] = static_cast<std::uint32_t>(range_l[q]);
       }
-      const std::uint64_t k = uniform_index(w[0][pick], w[1][pick], range_k[q]);
-      std::uint64_t l = uniform_index(w[2][pick], w[3][pick], range_l[q]);
+    }
+    if (narrow) {
+      uniform_indices(pick(0), pick(1), ranges_k, ks);
+      uniform_indices(pick(2), pick(3), ranges_l, ls);
+    } else {
+      for (std::uint64_t b = 0; b < m; ++b) {
+        const std::size_t q = one_pair ? 0 : d.qs[b];
+        ks[b] = uniform_index(w[0][b], w[1][b], range_k[q]);
+        ls[b] = uniform_index(w[2][b], w[3][b], range_l[q]);
+      }
+    }
+    for (std::uint64_t b = 0; b < m; ++b) {
+      const std::size_t q = one_pair ? 0 : d.qs[b];
       // Uniform over the other N_i - 1 particles; branch-free: a branch here is taken half the time at
       // random, and its mispredictions discard the overlapped work of the next candidates.
-      l += static_cast<std::uint64_t>((one_pair || same_species[q]) & (l >= k));  // one pair: one species
-      d.pk[b] = store_k[q]->particle(k);
+      const std::uint64_t l = ls[b] + static_cast<std::uint64_t>((one_pair || same_species[q]) & (ls[b] >= ks[b]));
+      d.pk[b] = store_k[q]->particle(ks[b]);
       d.pl[b] = store_l[q]->particle(l);
-      d.dir1[b] = uniform_open(w[0][draw]);
-      d.dir2[b] = uniform_open(w[1][draw]);
-      d.accept_word[b] = w[2][draw];
+    }
+    for (std::uint64_t b = 0; b < batch; ++b) {
+      d.dir1[b] = uniform_open(w[0][draw(b)]);
+      d.dir2[b] = uniform_open(w[1][draw(b)]);
+      d.accept_word[b] = w[2][draw(b)];
     }
     if constexpr (directions_for_all)  // the same bits as unit_vector, in SIMD
       unit_vectors(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2), std::span(d.sx),
