@@ -104,9 +104,20 @@ class BasicSpeciesStore {
   static_assert(sizeof(Record) == 4 * sizeof(Real));
   /// Rounds to the storage precision (to nearest; no rounding for double).
   static void store(Record& r, const Vec3& v) noexcept {
-    r.v[0] = static_cast<Real>(v.x);
-    r.v[1] = static_cast<Real>(v.y);
-    r.v[2] = static_cast<Real>(v.z);
+    r.v[0] = opaque(static_cast<Real>(v.x));
+    r.v[1] = opaque(static_cast<Real>(v.y));
+    r.v[2] = opaque(static_cast<Real>(v.z));
+  }
+  /// x, as a value the optimiser cannot trace back to the double it was rounded from. GCC 12.2 at -O2 and
+  /// above converts x and y to float as one pair, and gave a load of them right after the store the
+  /// doubles before the conversion (in its assembly, the unrounded pair where the floats should be read
+  /// back; tests/test_species_store.cpp reproduces it through this store). The empty asm statement costs
+  /// no instruction; the values stored are the same.
+  static Real opaque(Real x) noexcept {
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+    if constexpr (std::is_same_v<Real, float>) __asm__("" : "+x"(x));
+#endif
+    return x;
   }
   AlignedBuffer<Record> records_;
   double clock_origin_ = 0.0;  // last_update(k) = clock_origin_ + aux (0 for double)
