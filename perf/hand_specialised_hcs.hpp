@@ -72,7 +72,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   using Lanes = std::array<double, batch>;
   struct Drawn {
     std::uint64_t ks[batch], ls[batch];
-    std::uint32_t accept_word[batch];
+    Lanes accept;  // acceptance uniforms
     Lanes dir1, dir2;
   };
   std::array<std::uint64_t, 2 * batch> steps, index;
@@ -99,14 +99,14 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
     for (std::uint64_t b = 0; b < batch; ++b) {
       d.dir1[b] = uniform_open(w[0][batch + b]);
       d.dir2[b] = uniform_open(w[1][batch + b]);
-      d.accept_word[b] = w[2][batch + b];
+      d.accept[b] = uniform_open(w[2][batch + b]);
     }
   };
   // The screen's table of batch stamps, by particle index (two particles can share a slot).
   constexpr std::uint64_t slots = std::uint64_t{1} << 14;
   std::array<std::uint8_t, slots> seen{};
   std::uint8_t stamp = 0;
-  Lanes g2s{}, threshold{}, omega{}, sx, sy, sz;
+  Lanes g2s{}, sx, sy, sz;
   std::array<std::uint8_t, batch> which;
   std::array<Drawn, 2> drawn{};
   if (candidates > 0) {
@@ -136,16 +136,18 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       const HandRecord& e = v[d.ls[b]];
       const double gx = a.x - e.x, gy = a.y - e.y, gz = a.z - e.z;
       g2s[b] = gx * gx + gy * gy + gz * gz;
-      threshold[b] = uniform_open(d.accept_word[b]) * majorant;
       const std::uint64_t sk = d.ks[b] & (slots - 1), sl = d.ls[b] & (slots - 1);
       full_test |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
       seen[sk] = stamp;
       seen[sl] = stamp;
     }
+    std::uint64_t passes = 0;  // threshold against omega_hi lane by lane, the outcomes as bits
     for (std::uint64_t k = 0; k < batch; k += SimdDouble::size)
-      (prefactor * (0.25 * xsimd::sqrt(SimdDouble::load_unaligned(&g2s[k]))) * (1.0 + rounding_margin))
-          .store_unaligned(&omega[k]);
-    for (std::uint64_t b = 0; b < m; ++b) full_test |= static_cast<std::uint64_t>(!(threshold[b] > omega[b])) << b;
+      passes |= not_greater_bits(SimdDouble::load_unaligned(&d.accept[k]) * majorant,
+                                 prefactor * (0.25 * xsimd::sqrt(SimdDouble::load_unaligned(&g2s[k]))) *
+                                     (1.0 + rounding_margin))
+                << k;
+    full_test |= passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1);
     const std::size_t passed = selected_unit_vectors(full_test, d.dir1, d.dir2, which, sx, sy, sz);
     for (std::size_t e = 0; e < passed; ++e) {  // the full test, in order
       const std::uint64_t b = which[e];
@@ -157,7 +159,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       if (omega_b > majorant) {
         majorant = omega_b;  // majorant exceeded: accept and update (000 sec. 3)
         ++t.majorant_updates;
-      } else if (uniform_open(d.accept_word[b]) * majorant > omega_b) {
+      } else if (d.accept[b] * majorant > omega_b) {
         continue;
       }
       const double g_norm = std::sqrt(g2);  // sigma-hat along g-hat + n

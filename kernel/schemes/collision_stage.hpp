@@ -125,13 +125,13 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   // A batch's values in whole SIMD registers.
   constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
   using Lanes = std::array<double, lanes>;
-  // The draws of a batch: its candidates' pairs, particles, acceptance words and the uniforms of their
+  // The draws of a batch: its candidates' pairs, particles, acceptance uniforms and the uniforms of their
   // directions n; the directions themselves where every candidate needs one (with the acceptance on the
   // mean and the screen, only the candidates that pass it get theirs).
   struct Drawn {
     typename Store::Particle pk[batch], pl[batch];
     std::uint8_t qs[batch];
-    std::uint32_t accept_word[batch];
+    Lanes accept;
     Lanes dir1, dir2, sx, sy, sz;
   };
   std::array<std::uint64_t, 2 * batch> steps, index;
@@ -196,7 +196,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     for (std::uint64_t b = 0; b < batch; ++b) {
       d.dir1[b] = uniform_open(w[0][draw(b)]);
       d.dir2[b] = uniform_open(w[1][draw(b)]);
-      d.accept_word[b] = w[2][draw(b)];
+      d.accept[b] = uniform_open(w[2][draw(b)]);
     }
     if constexpr (directions_for_all)  // the same bits as unit_vector, in SIMD
       unit_vectors(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2), std::span(d.sx),
@@ -223,7 +223,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       if (omega > majorant[q]) {
         majorant[q] = omega;
         ++tally[q].majorant_updates;
-      } else if (uniform_open(d.accept_word[b]) * majorant[q] > omega) {
+      } else if (d.accept[b] * majorant[q] > omega) {
         return;
       }
     } else {  // the mean over sigma-hat first, then sigma-hat given the collision
@@ -234,7 +234,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       if (omega > majorant[q]) {
         majorant[q] = omega;
         ++tally[q].majorant_updates;
-      } else if (uniform_open(d.accept_word[b]) * majorant[q] > omega) {
+      } else if (d.accept[b] * majorant[q] > omega) {
         return;
       }
       const ImpactDirection id = impact_direction(g, std::sqrt(g2), {nx[e], ny[e], nz[e]});
@@ -291,7 +291,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
         }
         const std::size_t q = one_pair ? 0 : d.qs[b];
         const PairCoefficients& p = one_pair ? only_pair : pairs[q];
-        threshold[b] = uniform_open(d.accept_word[b]) * majorant[q];
+        if constexpr (!one_pair) threshold[b] = d.accept[b] * majorant[q];
         if constexpr (Shift::active) {
           static_assert(std::is_same_v<Kernel, HardSphere>, "the Enskog shift runs with hard spheres (schemes/dispatch.cpp)");
           const Vec3 sigma{d.sx[b], d.sy[b], d.sz[b]};
@@ -300,19 +300,29 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
           omega[b] = p.rate_prefactor * (dot(g, sigma) + rounding_margin * terms) * (1.0 + rounding_margin);
         } else {
           g2[b] = norm2(d.pk[b].velocity() - d.pl[b].velocity());
-          prefactor[b] = p.rate_prefactor;
+          if constexpr (!one_pair) prefactor[b] = p.rate_prefactor;
         }
         const std::size_t sk = slot(d.pk[b]), sl = slot(d.pl[b]);
         full_test |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
         seen[sk] = stamp;
         seen[sl] = stamp;
       }
-      if constexpr (!Shift::active)
-        for (std::size_t k = 0; k < lanes; k += SimdDouble::size)
-          (SimdDouble::load_unaligned(&prefactor[k]) * kernel.mean_rate(SimdDouble::load_unaligned(&g2[k])) *
-           (1.0 + rounding_margin))
-              .store_unaligned(&omega[k]);
-      for (std::uint64_t b = 0; b < m; ++b) full_test |= static_cast<std::uint64_t>(!(threshold[b] > omega[b])) << b;
+      // Threshold and omega_hi lane by lane, and the lanes not rejected with certainty as bits (one
+      // pair: the threshold from the acceptance uniforms and the pair's majorant, here in SIMD).
+      std::uint64_t passes = 0;
+      for (std::size_t k = 0; k < lanes; k += SimdDouble::size) {
+        const SimdDouble thr = one_pair ? SimdDouble::load_unaligned(&d.accept[k]) * majorant[0]
+                                        : SimdDouble::load_unaligned(&threshold[k]);
+        SimdDouble om;
+        if constexpr (Shift::active) {
+          om = SimdDouble::load_unaligned(&omega[k]);
+        } else {
+          const SimdDouble pre = one_pair ? SimdDouble(only_pair.rate_prefactor) : SimdDouble::load_unaligned(&prefactor[k]);
+          om = pre * kernel.mean_rate(SimdDouble::load_unaligned(&g2[k])) * (1.0 + rounding_margin);
+        }
+        passes |= not_greater_bits(thr, om) << k;
+      }
+      full_test |= passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1);
     }
     return full_test;
   };
