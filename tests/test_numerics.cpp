@@ -17,6 +17,7 @@
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
+#include "kernel/core/simd.hpp"
 #include "kernel/core/turn_sincos.hpp"
 #include "kernel/observe/compensated_sum.hpp"
 #include "kernel/observe/moments.hpp"
@@ -207,6 +208,29 @@ TEST(Numerics, IndicesLaneByLaneAreTheScalarIndices) {
       ASSERT_EQ(out[k], uniform_index(hi[k], lo[k], n[k])) << "words " << hi[k] << ", " << lo[k] << ", range " << n[k];
       ASSERT_LT(out[k], n[k]);
     }
+  }
+}
+
+TEST(Numerics, NotGreaterBitsAreTheScalarComparisons) {
+  // not_greater_bits (core/simd.hpp) against !(a > b) lane by lane, with equal values, signed zeros,
+  // infinities and NaN on either side: the collision stage's screen sends a candidate to the full test
+  // exactly where the scalar comparison would.
+  constexpr std::size_t w = SimdDouble::size;
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const std::array<double, 8> special = {0.0, -0.0, 1.0, 1.0 + 0x1p-52, -inf, inf, nan, 0.5};
+  const RandomStream rng(19, 0);
+  for (std::uint64_t round = 0; round < 4096; ++round) {
+    std::array<double, w> a, b;
+    for (std::size_t k = 0; k < w; ++k) {
+      const RandomBlock r = rng.block(RngPurpose::initial_velocity, 0, round, k);
+      a[k] = r[0] % 4 == 0 ? special[r[1] % special.size()] : uniform_open(r[1]);
+      b[k] = r[2] % 4 == 0 ? special[r[3] % special.size()] : uniform_open(r[3]);
+      if (r[0] % 16 == 1) b[k] = a[k];
+    }
+    const std::uint64_t bits = not_greater_bits(SimdDouble::load_unaligned(a.data()), SimdDouble::load_unaligned(b.data()));
+    for (std::size_t k = 0; k < w; ++k)
+      ASSERT_EQ((bits >> k) & 1u, static_cast<std::uint64_t>(!(a[k] > b[k]))) << a[k] << " " << b[k];
+    ASSERT_EQ(bits >> w, 0u);
   }
 }
 
