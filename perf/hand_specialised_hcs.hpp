@@ -80,7 +80,6 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   std::array<std::uint32_t, batch> range_k, range_l;  // n < 2^32 (hand_collide's precondition)
   range_k.fill(static_cast<std::uint32_t>(n));
   range_l.fill(static_cast<std::uint32_t>(n - 1));
-  std::array<std::uint64_t, batch> ls;
   auto draw_batch = [&](Drawn& d, std::uint64_t s0, std::uint64_t m) {
     for (std::uint64_t b = 0; b < batch; ++b) {  // block 2s in lane b, block 2s + 1 in lane batch + b
       index[b] = 2 * (s0 + b);
@@ -89,7 +88,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
     const RandomBlocks<2 * batch> blocks = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
     const auto& w = blocks.word;
     auto pick = [&](std::size_t word) { return std::span<const std::uint32_t, batch>(w[word].data(), batch); };
-    std::array<std::uint64_t, batch> ks;
+    std::array<std::uint64_t, batch> ks, ls;
     uniform_indices(pick(0), pick(1), range_k, ks);
     uniform_indices(pick(2), pick(3), range_l, ls);
     for (std::uint64_t b = 0; b < m; ++b) {
