@@ -8,7 +8,9 @@
 //    when elastic and unheated, the majorant grows without a violation); strong heating with lambda = 1.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <string>
 #include <numbers>
 #include <utility>
 
@@ -202,4 +204,73 @@ TEST(EventScheme, ThinningOnSquaresGivesTheOutcomesOfTheRatio) {
         << n << " " << g2 << " " << threshold << " " << majorant;
   }
   EXPECT_GT(near, 250000u);
+}
+
+namespace {
+
+template <class Real>
+void expect_same_store(const BasicSpeciesStore<Real>& a, const BasicSpeciesStore<Real>& b, double t) {
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const Vec3 va = a.velocity(k), vb = b.velocity(k);
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.x), std::bit_cast<std::uint64_t>(vb.x)) << "particle " << k << " at t = " << t;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.y), std::bit_cast<std::uint64_t>(vb.y)) << "particle " << k << " at t = " << t;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.z), std::bit_cast<std::uint64_t>(vb.z)) << "particle " << k << " at t = " << t;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(a.last_update(k)), std::bit_cast<std::uint64_t>(b.last_update(k)));
+  }
+}
+
+/// The scheme with candidates in registers and one by one from the same start, to the same sample times:
+/// every particle and every count the same bits.
+template <class Real, class Kernel>
+void expect_registers_match_one_by_one(const Scene& s, Kernel kernel, bool fast_particle) {
+  BasicGasState<Real> initial = maxwellian_state<Real>(s, RandomStream(s.run.seed, 0));
+  if (fast_particle) {  // 30 thermal speeds: U_max is raised and falls back, the registers stop at raises
+    BasicSpeciesStore<Real>& store = initial.species[0];
+    store.set_velocity(0, store.velocity(0) + Vec3{30.0, 0.0, 0.0});
+  }
+  BasicEventWhiteNoise<Real, Kernel, true> registers(s, 0, kernel, initial);
+  BasicEventWhiteNoise<Real, Kernel, false> one_by_one(s, 0, kernel, initial);
+  for (int k = 1; k <= s.run.samples; ++k) {
+    const double t = s.run.t_end * k / s.run.samples;
+    registers.advance_to(t);
+    one_by_one.advance_to(t);
+    expect_same_store(registers.state().species[0], one_by_one.state().species[0], t);
+  }
+  const EventTally &a = registers.tally(), &b = one_by_one.tally();
+  EXPECT_GT(a.candidates, 1000u);
+  EXPECT_EQ(a.candidates, b.candidates);
+  EXPECT_EQ(a.collisions, b.collisions);
+  EXPECT_EQ(a.majorant_updates, b.majorant_updates);
+  EXPECT_EQ(a.majorant_violations, b.majorant_violations);
+  if (fast_particle && !Kernel::constant_rate) {
+    EXPECT_GT(a.majorant_updates, 0u);
+  }
+}
+
+template <class Real>
+void expect_registers_match_one_by_one_for_each_kernel() {
+  for (const std::int64_t n : {64, 3000}) {  // with 64 particles a register's pairs often share one
+    for (const bool fast : {false, true}) {
+      Scene s = example(CollisionKernel::hard_sphere, 30.0, n, 1);  // 001 Examples 8-9's heating
+      s.collision.rate = 16.0 / (4.0 * std::numbers::pi);
+      s.collision.restitution = {{{0.1, 0.1}, {0.1, 0.1}}};
+      s.run.t_end = n == 64 ? 2.0 : 0.1;
+      s.run.samples = 4;
+      SCOPED_TRACE("n = " + std::to_string(n) + (fast ? ", a fast particle" : ""));
+      expect_registers_match_one_by_one<Real>(s, MaxwellKernel{}, fast);
+      expect_registers_match_one_by_one<Real>(s, IsotropicHardSphereKernel{}, fast);
+      expect_registers_match_one_by_one<Real>(s, VhsKernel{0.5}, fast);
+      expect_registers_match_one_by_one<Real>(s, VhsKernel{0.3}, fast);
+    }
+  }
+}
+
+}  // namespace
+
+TEST(EventScheme, CandidatesInRegistersAreTheSameBitsAsOneByOne) {
+  expect_registers_match_one_by_one_for_each_kernel<double>();
+}
+
+TEST(EventScheme, CandidatesInRegistersAreTheSameBitsAsOneByOneWithFloatStorage) {
+  expect_registers_match_one_by_one_for_each_kernel<float>();
 }

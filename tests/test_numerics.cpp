@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -232,6 +233,55 @@ TEST(Numerics, NotGreaterBitsAreTheScalarComparisons) {
       ASSERT_EQ((bits >> k) & 1u, static_cast<std::uint64_t>(!(a[k] > b[k]))) << a[k] << " " << b[k];
     ASSERT_EQ(bits >> w, 0u);
   }
+}
+
+namespace {
+
+/// lane_bits, rounded_to and all_different (core/simd.hpp) for registers of Arch against their scalar forms.
+template <class Arch>
+void check_lane_helpers() {
+  using Doubles = xsimd::batch<double, Arch>;
+  using Indices = xsimd::batch<std::uint64_t, Arch>;
+  constexpr std::size_t w = Doubles::size;
+  const RandomStream rng(23, 0);
+  for (std::uint64_t round = 0; round < 4096; ++round) {
+    alignas(64) std::array<double, w> a, b;
+    alignas(64) std::array<std::uint64_t, w> i, j;
+    for (std::size_t k = 0; k < w; ++k) {
+      const RandomBlock r = rng.block(RngPurpose::initial_velocity, 0, round, k);
+      a[k] = std::ldexp(uniform_open(r[0]) - 0.5, static_cast<int>(r[1] % 300) - 150);  // below, in, above float's range
+      b[k] = uniform_open(r[2]) - 0.5;
+      i[k] = r[3] % (2 * w * w);  // often equal to another lane's value
+      j[k] = r[1] % (2 * w * w);
+    }
+    const std::uint64_t bits = lane_bits(Doubles::load_aligned(a.data()) < Doubles::load_aligned(b.data()));
+    alignas(64) std::array<double, w> rounded, same;
+    rounded_to<float>(Doubles::load_aligned(a.data())).store_aligned(rounded.data());
+    rounded_to<double>(Doubles::load_aligned(a.data())).store_aligned(same.data());
+    bool different = true;
+    for (std::size_t k = 0; k < w; ++k) {
+      ASSERT_EQ((bits >> k) & 1u, static_cast<std::uint64_t>(a[k] < b[k]));
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(rounded[k]), std::bit_cast<std::uint64_t>(static_cast<double>(static_cast<float>(a[k]))))
+          << Arch::name() << ": " << a[k];
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(same[k]), std::bit_cast<std::uint64_t>(a[k]));
+      for (std::size_t l = 0; l < w; ++l) different = different && i[k] != j[l] && (k == l || (i[k] != i[l] && j[k] != j[l]));
+    }
+    ASSERT_EQ(bits >> w, 0u);
+    ASSERT_EQ(all_different(Indices::load_aligned(i.data()), Indices::load_aligned(j.data())), different);
+  }
+}
+
+}  // namespace
+
+TEST(Numerics, LaneHelpersAreTheScalarOperations) {
+  // The event scheme's candidates in registers (schemes/event_white_noise.hpp) take their outcomes as
+  // bits, round velocities as a float store does, and check that a register's pairs share no particle
+  // with these; each for the build's registers and for two narrower ones (other branches of the helpers).
+  check_lane_helpers<SimdDouble::arch_type>();
+  check_lane_helpers<xsimd::sse2>();
+#if XSIMD_WITH_AVX2
+  check_lane_helpers<xsimd::avx2>();
+#endif
 }
 
 TEST(Numerics, MaxwellianStartIsTheSameForAnyPartOfTheParticles) {

@@ -20,6 +20,7 @@
 #include <type_traits>
 
 #include "kernel/core/aligned_buffer.hpp"
+#include "kernel/core/rounded_float.hpp"
 #include "kernel/core/vec3.hpp"
 
 namespace granmc {
@@ -59,7 +60,7 @@ class BasicSpeciesStore {
   void set_velocity(std::size_t k, const Vec3& v) noexcept { store(records_[k], v); }
   /// The time of particle k's last lazy update (event scheme, 001 sec. 4: particles are (v_j, t_j)).
   [[nodiscard]] double last_update(std::size_t k) const noexcept { return clock_origin_ + records_[k].aux; }
-  void set_last_update(std::size_t k, double t) noexcept { records_[k].aux = static_cast<Real>(t - clock_origin_); }
+  void set_last_update(std::size_t k, double t) noexcept { records_[k].aux = rounded(t - clock_origin_); }
   /// Declares that every particle's last update is t (all were just brought to t): float times restart
   /// from t, so they keep their resolution over long runs. Double times are already exact: nothing to do.
   void restart_clock(double t) noexcept {
@@ -102,22 +103,19 @@ class BasicSpeciesStore {
     Real aux;
   };
   static_assert(sizeof(Record) == 4 * sizeof(Real));
-  /// Rounds to the storage precision (to nearest; no rounding for double).
+  /// Rounds to the storage precision (to nearest; no rounding for double), past GCC 12.2's fault
+  /// (core/rounded_float.hpp).
   static void store(Record& r, const Vec3& v) noexcept {
-    r.v[0] = opaque(static_cast<Real>(v.x));
-    r.v[1] = opaque(static_cast<Real>(v.y));
-    r.v[2] = opaque(static_cast<Real>(v.z));
+    r.v[0] = rounded(v.x);
+    r.v[1] = rounded(v.y);
+    r.v[2] = rounded(v.z);
   }
-  /// x, as a value the optimiser cannot trace back to the double it was rounded from. GCC 12.2 at -O2 and
-  /// above converts x and y to float as one pair, and gave a load of them right after the store the
-  /// doubles before the conversion (in its assembly, the unrounded pair where the floats should be read
-  /// back; tests/test_species_store.cpp reproduces it through this store). The empty asm statement costs
-  /// no instruction; the values stored are the same.
-  static Real opaque(Real x) noexcept {
-#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
-    if constexpr (std::is_same_v<Real, float>) __asm__("" : "+x"(x));
-#endif
-    return x;
+  static Real rounded(double x) noexcept {
+    if constexpr (std::is_same_v<Real, float>) {
+      return rounded_float(x);
+    } else {
+      return x;
+    }
   }
   AlignedBuffer<Record> records_;
   double clock_origin_ = 0.0;  // last_update(k) = clock_origin_ + aux (0 for double)

@@ -23,6 +23,7 @@
 // Velocities are stored in units of u = sqrt(T(0)) (GasState::scale, fixed here).
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -34,6 +35,7 @@
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
+#include "kernel/core/simd.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
@@ -63,8 +65,10 @@ inline Thinning thinning(double g2, double threshold, double majorant, double ma
   return threshold < ratio ? Thinning::real : Thinning::fictitious;
 }
 
-/// Real is the storage precision of the particles (run.storage; core/species_store.hpp).
-template <class Real, class Kernel>
+/// Real is the storage precision of the particles (run.storage; core/species_store.hpp). With
+/// in_registers = false every candidate goes through `candidate`, one after the other: the reference the
+/// tests hold candidates_in_simd to, bit for bit.
+template <class Real, class Kernel, bool in_registers = true>
 class BasicEventWhiteNoise {
   using Store = BasicSpeciesStore<Real>;
   using State = BasicGasState<Real>;
@@ -105,6 +109,11 @@ class BasicEventWhiteNoise {
     Store& store = state_.species[0];
     for (;;) {
       const DrawBatch& batch = batches_[current_];
+      if (in_registers && noise_ != 0.0 && slot_ + lanes <= batch_size) {
+        const std::size_t done = candidates_in_simd(store, batch, slot_, t);
+        for (std::size_t k = 0; k < done; ++k) next_slot();
+        if (done != 0) continue;
+      }
       const double next = state_.time + batch.wait[slot_] / candidate_rate_;  // 001 step 2.1
       if (!(next < t)) break;  // memoryless: the draw is discarded and the process restarts at t
       state_.time = next;
@@ -140,7 +149,9 @@ class BasicEventWhiteNoise {
     std::array<double, batch_size> wait{};       // -log u of step 2.1: the waiting time is wait / rate
     std::array<double, batch_size> threshold{};  // step 2.8: real iff threshold < |v_i - v_j| / U_max
     std::array<double, batch_size> ex{}, ey{}, ez{};            // e of step 2.9
-    std::array<double, 3 * batch_size> normal1{}, normal2{};  // draw k: pairs 3k, 3k + 1, 3k + 2
+    // Draw k's normals: pairs k, batch_size + k and 2 batch_size + k, so that the same component of
+    // consecutive draws is contiguous (candidates_in_simd loads them a register at a time)
+    std::array<double, 3 * batch_size> normal1{}, normal2{};
   };
 
   void prepare(DrawBatch& batch, std::uint64_t first) const noexcept {
@@ -169,12 +180,12 @@ class BasicEventWhiteNoise {
       const RandomBlocks<2 * batch_size> normals = rng_.blocks(RngPurpose::event_candidate, 0, step, index);
       const auto& z = normals.word;
       for (std::size_t k = 0; k < batch_size; ++k) {  // pairs (z0[0], z0[1]), (z0[2], z0[3]), (z1[0], z1[1])
-        u1[3 * k] = uniform_open(z[0][2 * k]);
-        u2[3 * k] = uniform_open(z[1][2 * k]);
-        u1[3 * k + 1] = uniform_open(z[2][2 * k]);
-        u2[3 * k + 1] = uniform_open(z[3][2 * k]);
-        u1[3 * k + 2] = uniform_open(z[0][2 * k + 1]);
-        u2[3 * k + 2] = uniform_open(z[1][2 * k + 1]);
+        u1[k] = uniform_open(z[0][2 * k]);
+        u2[k] = uniform_open(z[1][2 * k]);
+        u1[batch_size + k] = uniform_open(z[2][2 * k]);
+        u2[batch_size + k] = uniform_open(z[3][2 * k]);
+        u1[2 * batch_size + k] = uniform_open(z[0][2 * k + 1]);
+        u2[2 * batch_size + k] = uniform_open(z[1][2 * k + 1]);
       }
     }
     negative_log_in_place(std::span(batch.wait));
@@ -201,6 +212,10 @@ class BasicEventWhiteNoise {
   /// used one is refilled with the draws after it.
   void next_draw() noexcept {
     prefetch_pair(batches_[current_ ^ 1u], slot_);
+    next_slot();
+  }
+  /// next_draw without the prefetch (candidates_in_simd issues its own).
+  void next_slot() noexcept {
     ++draws_;
     if (++slot_ < batch_size) return;
     prepare(batches_[current_], draws_ + batch_size);
@@ -224,6 +239,113 @@ class BasicEventWhiteNoise {
     store.restart_clock(t);
   }
 
+  /// The candidates of slots k, k + 1, ... of the batch, as `candidate` does them one after the other, a
+  /// register of them (`lanes`) at a time: the times of step 2.1, the Brownian updates of steps 2.5-2.6
+  /// and the tests of steps 2.7-2.8 in SIMD, then in order the stores and, for the real candidates, steps
+  /// 2.9-2.10. This holds while the candidates share no particle and U_max stays: the register is done
+  /// up to the first candidate (excluded) whose particles could raise U_max at step 2.7 or whose test
+  /// lies within the rounding margin (both left to `candidate`), or up to a raise at step 2.10 (included:
+  /// the later times depend on the new pi_hat), or up to t_end (excluded). Returns how many were done;
+  /// none when the register's particles are not all different or the first is left to `candidate`. The
+  /// same operations on the same values as `candidate`: the same bits (tests/test_event_scheme.cpp).
+  static constexpr std::size_t lanes = SimdDouble::size;
+  std::size_t candidates_in_simd(Store& store, const DrawBatch& batch, std::size_t k, double t_end) {
+    using Indices = xsimd::batch<std::uint64_t, SimdDouble::arch_type>;
+    static_assert(Indices::size == lanes && sizeof(std::size_t) == sizeof(std::uint64_t));
+    if (!all_different(Indices::load_unaligned(reinterpret_cast<const std::uint64_t*>(&batch.i[k])),
+                       Indices::load_unaligned(reinterpret_cast<const std::uint64_t*>(&batch.j[k]))))
+      return 0;
+    // Step 2.1: the candidate times, added in order as `advance_to` does
+    alignas(64) std::array<double, lanes> time;
+    (SimdDouble::load_unaligned(&batch.wait[k]) / candidate_rate_).store_aligned(time.data());
+    std::size_t active = 0;
+    for (double now = state_.time; active < lanes; ++active) {
+      now += time[active];
+      if (!(now < t_end)) break;
+      time[active] = now;
+    }
+    if (active == 0) return 0;
+    // The pairs' records, component by component
+    alignas(64) std::array<double, lanes> ti, xi, yi, zi, tj, xj, yj, zj;
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const std::size_t i = batch.i[k + l], j = batch.j[k + l];
+      const Vec3 vi = store.velocity(i), vj = store.velocity(j);
+      ti[l] = store.last_update(i);
+      tj[l] = store.last_update(j);
+      xi[l] = vi.x, yi[l] = vi.y, zi[l] = vi.z;
+      xj[l] = vj.x, yj[l] = vj.y, zj[l] = vj.z;
+    }
+    // Steps 2.5-2.6: v += sqrt(2 beta s) xi where s > 0 (001 eq. 23), rounded as the store rounds
+    const SimdDouble t = SimdDouble::load_aligned(time.data());
+    constexpr std::size_t b = batch_size;
+    const auto& z1 = batch.normal1;
+    const auto& z2 = batch.normal2;
+    auto brownian = [&](const std::array<double, lanes>& last, std::array<double, lanes>& x,
+                        std::array<double, lanes>& y, std::array<double, lanes>& z, const double* nx,
+                        const double* ny, const double* nz) {
+      const SimdDouble s = t - SimdDouble::load_aligned(last.data());
+      const auto moved = s > SimdDouble(0.0);
+      const SimdDouble width = xsimd::sqrt(noise_ * s);
+      auto move = [&](std::array<double, lanes>& c, const double* n) {
+        const SimdDouble old = SimdDouble::load_aligned(c.data());
+        xsimd::select(moved, rounded_to<Real>(old + width * SimdDouble::load_unaligned(n)), old).store_aligned(c.data());
+      };
+      move(x, nx);
+      move(y, ny);
+      move(z, nz);
+    };
+    brownian(ti, xi, yi, zi, &z1[k], &z2[k], &z1[b + k]);
+    brownian(tj, xj, yj, zj, &z2[b + k], &z1[2 * b + k], &z2[2 * b + k]);
+    const SimdDouble vix = SimdDouble::load_aligned(xi.data()), viy = SimdDouble::load_aligned(yi.data()),
+                     viz = SimdDouble::load_aligned(zi.data()), vjx = SimdDouble::load_aligned(xj.data()),
+                     vjy = SimdDouble::load_aligned(yj.data()), vjz = SimdDouble::load_aligned(zj.data());
+    // Steps 2.7-2.8 as bits: real, and left to `candidate` (the register stops before it)
+    std::uint64_t real = (std::uint64_t{1} << active) - 1, stop = std::uint64_t{1} << active;
+    if constexpr (!Kernel::constant_rate) {
+      const SimdDouble rx(reference_.x), ry(reference_.y), rz(reference_.z);
+      auto far2 = [&](const SimdDouble& x, const SimdDouble& y, const SimdDouble& z) {
+        const SimdDouble dx = x - rx, dy = y - ry, dz = z - rz;
+        return dx * dx + dy * dy + dz * dz;
+      };
+      const SimdDouble below(raise_below());
+      stop |= ~lane_bits((far2(vix, viy, viz) < below) & (far2(vjx, vjy, vjz) < below));
+      const SimdDouble dx = vix - vjx, dy = viy - vjy, dz = viz - vjz;
+      const SimdDouble g2 = dx * dx + dy * dy + dz * dz;
+      const SimdDouble accept = SimdDouble::load_unaligned(&batch.threshold[k]) * majorant_, accept2 = accept * accept;
+      const auto fictitious = g2 < accept2 * (1.0 - rounding_margin);
+      const auto certain = (g2 > accept2 * (1.0 + rounding_margin)) & (g2 < SimdDouble(majorant2_ * (1.0 - rounding_margin)));
+      real &= lane_bits(certain);
+      stop |= ~lane_bits(fictitious | certain);
+    }
+    const std::size_t first_stop = static_cast<std::size_t>(std::countr_zero(stop));
+    // In order: the records, and steps 2.9-2.10 for the real candidates
+    for (std::size_t l = 0; l < first_stop; ++l) {
+      prefetch_pair(batches_[current_ ^ 1u], k + l);
+      const std::size_t i = batch.i[k + l], j = batch.j[k + l];
+      Vec3 vi{xi[l], yi[l], zi[l]}, vj{xj[l], yj[l], zj[l]};
+      store.set_last_update(i, time[l]);
+      store.set_last_update(j, time[l]);
+      ++tally_.candidates;
+      if (((real >> l) & 1u) == 0) {
+        store.set_velocity(i, vi);
+        store.set_velocity(j, vj);
+        continue;
+      }
+      isotropic_scattering(vi, vj, {batch.ex[k + l], batch.ey[k + l], batch.ez[k + l]}, alpha_);  // step 2.9
+      store.set_velocity(i, vi);
+      store.set_velocity(j, vj);
+      ++tally_.collisions;
+      if constexpr (!Kernel::constant_rate) {
+        if (raise_majorant(store.velocity(i), store.velocity(j))) {  // step 2.10
+          state_.time = time[l];
+          return l + 1;
+        }
+      }
+    }
+    if (first_stop != 0) state_.time = time[first_stop - 1];
+    return first_stop;
+  }
+
   /// One candidate at state_.time: 001 steps 2.5-2.10, with slot k of the batch.
   void candidate(Store& store, const DrawBatch& batch, std::size_t k) {
     const std::size_t i = batch.i[k], j = batch.j[k];
@@ -231,8 +353,9 @@ class BasicEventWhiteNoise {
     if (noise_ != 0.0) {  // steps 2.5-2.6
       const auto& z1 = batch.normal1;
       const auto& z2 = batch.normal2;
-      brownian_update(store, i, t, {z1[3 * k], z2[3 * k], z1[3 * k + 1]});
-      brownian_update(store, j, t, {z2[3 * k + 1], z1[3 * k + 2], z2[3 * k + 2]});
+      constexpr std::size_t b = batch_size;
+      brownian_update(store, i, t, {z1[k], z2[k], z1[b + k]});
+      brownian_update(store, j, t, {z2[b + k], z1[2 * b + k], z2[2 * b + k]});
     }
     ++tally_.candidates;
     Vec3 vi = store.velocity(i), vj = store.velocity(j);
@@ -253,17 +376,19 @@ class BasicEventWhiteNoise {
     if constexpr (!Kernel::constant_rate) raise_majorant(store.velocity(i), store.velocity(j));
   }
 
-  /// Steps 2.7 and 2.10: U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|). The square root is taken only
-  /// when the squares are within the rounding margin of (U_max / 2)^2 or above it.
-  void raise_majorant(const Vec3& vi, const Vec3& vj) noexcept {
+  /// Steps 2.7 and 2.10: U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|); whether it rose. The square
+  /// root is taken only when the squares are within the rounding margin of (U_max / 2)^2 or above it.
+  bool raise_majorant(const Vec3& vi, const Vec3& vj) noexcept {
     const double far2 = std::max(norm2(vi - reference_), norm2(vj - reference_));
-    if (far2 < 0.25 * majorant2_ * (1.0 - rounding_margin)) return;
+    if (far2 < raise_below()) return false;
     const double bound = 2.0 * std::sqrt(far2);
-    if (bound > majorant_) {
-      set_majorant(bound);
-      ++tally_.majorant_updates;
-    }
+    if (!(bound > majorant_)) return false;
+    set_majorant(bound);
+    ++tally_.majorant_updates;
+    return true;
   }
+  /// |v - V|^2 below this cannot raise U_max.
+  [[nodiscard]] double raise_below() const noexcept { return 0.25 * majorant2_ * (1.0 - rounding_margin); }
 
   /// V := bulk velocity, U_max := 2 max_j |v_j - V| (001 steps 1.3-1.4), with every particle current.
   void reset_majorant() noexcept {
