@@ -21,6 +21,7 @@
 
 #include "kernel/core/aligned_buffer.hpp"
 #include "kernel/core/rounded_float.hpp"
+#include "kernel/core/simd.hpp"
 #include "kernel/core/vec3.hpp"
 
 namespace granmc {
@@ -78,6 +79,93 @@ class BasicSpeciesStore {
 
   /// Hint that particle k will be read soon (random pair selection is memory-latency bound).
   void prefetch(std::size_t k) const noexcept { __builtin_prefetch(&records_[k], 1, 3); }
+
+  /// v as set_velocity would store it and velocity read it back.
+  [[nodiscard]] static Vec3 as_stored(const Vec3& v) noexcept { return {rounded(v.x), rounded(v.y), rounded(v.z)}; }
+
+// GCC 12 warns inside its own AVX-512 conversions (the _mm512_undefined_* idiom), as in core/simd.hpp.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+  /// A register of particles (the event scheme's candidates, one particle per lane): lane l of
+  /// x, y, z is particle index[l]'s velocity and lane l of t its last update. With AVX-512 the records are
+  /// loaded whole and transposed; otherwise lane by lane.
+  void load_lanes(const std::size_t* index, SimdDouble& x, SimdDouble& y, SimdDouble& z, SimdDouble& t) const noexcept {
+    constexpr std::size_t w = SimdDouble::size;
+    if constexpr (w == 8 && std::is_base_of_v<xsimd::avx512f, SimdDouble::arch_type>) {
+      if constexpr (std::is_same_v<Real, float>) {  // 8 records of 4 floats: two per 256-bit register
+        auto pair = [&](std::size_t a) {
+          return _mm256_set_m128(_mm_load_ps(records_[index[a + 4]].v), _mm_load_ps(records_[index[a]].v));
+        };
+        const __m256 a0 = pair(0), a1 = pair(1), a2 = pair(2), a3 = pair(3);
+        const __m256 t0 = _mm256_unpacklo_ps(a0, a1), t1 = _mm256_unpackhi_ps(a0, a1);  // x0 x1 y0 y1 | ..., z0 z1 a0 a1 | ...
+        const __m256 t2 = _mm256_unpacklo_ps(a2, a3), t3 = _mm256_unpackhi_ps(a2, a3);  // x2 x3 y2 y3 | ..., z2 z3 a2 a3 | ...
+        x = _mm512_cvtps_pd(_mm256_shuffle_ps(t0, t2, 0x44));
+        y = _mm512_cvtps_pd(_mm256_shuffle_ps(t0, t2, 0xEE));
+        z = _mm512_cvtps_pd(_mm256_shuffle_ps(t1, t3, 0x44));
+        t = SimdDouble(clock_origin_) + SimdDouble(_mm512_cvtps_pd(_mm256_shuffle_ps(t1, t3, 0xEE)));
+      } else {  // 8 records of 4 doubles: two per 512-bit register
+        auto pair = [&](std::size_t a) {
+          return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_load_pd(records_[index[a]].v)),
+                                    _mm256_load_pd(records_[index[a + 4]].v), 1);
+        };
+        const __m512d a0 = pair(0), a1 = pair(1), a2 = pair(2), a3 = pair(3);
+        const __m512d t0 = _mm512_unpacklo_pd(a0, a1), t1 = _mm512_unpackhi_pd(a0, a1);  // x0 x1 z0 z1 x4 ..., y0 y1 a0 a1 y4 ...
+        const __m512d t2 = _mm512_unpacklo_pd(a2, a3), t3 = _mm512_unpackhi_pd(a2, a3);  // x2 x3 z2 z3 x6 ..., y2 y3 a2 a3 y6 ...
+        const __m512i low = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13), high = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
+        x = _mm512_permutex2var_pd(t0, low, t2);
+        z = _mm512_permutex2var_pd(t0, high, t2);
+        y = _mm512_permutex2var_pd(t1, low, t3);
+        t = SimdDouble(clock_origin_) + SimdDouble(_mm512_permutex2var_pd(t1, high, t3));  // as last_update adds it
+      }
+    } else {
+      alignas(64) double lx[w], ly[w], lz[w], lt[w];
+      for (std::size_t l = 0; l < w; ++l) {
+        const Vec3 v = velocity(index[l]);
+        lx[l] = v.x, ly[l] = v.y, lz[l] = v.z, lt[l] = last_update(index[l]);
+      }
+      x = SimdDouble::load_aligned(lx), y = SimdDouble::load_aligned(ly), z = SimdDouble::load_aligned(lz);
+      t = SimdDouble::load_aligned(lt);
+    }
+  }
+  /// Stores lanes l < count: particle index[l] gets velocity (x, y, z) and last update t, each rounded
+  /// to the storage precision as set_velocity and set_last_update round.
+  void store_lanes(const std::size_t* index, std::size_t count, const SimdDouble& x, const SimdDouble& y,
+                   const SimdDouble& z, const SimdDouble& t) noexcept {
+    constexpr std::size_t w = SimdDouble::size;
+    if constexpr (w == 8 && std::is_base_of_v<xsimd::avx512f, SimdDouble::arch_type>) {
+      if constexpr (std::is_same_v<Real, float>) {
+        const __m256 fx = _mm512_cvtpd_ps(x), fy = _mm512_cvtpd_ps(y), fz = _mm512_cvtpd_ps(z);
+        const __m256 fa = _mm512_cvtpd_ps(t - SimdDouble(clock_origin_));
+        const __m256 t0 = _mm256_unpacklo_ps(fx, fy), t1 = _mm256_unpackhi_ps(fx, fy);  // x0 y0 x1 y1 | x4 y4 x5 y5
+        const __m256 t2 = _mm256_unpacklo_ps(fz, fa), t3 = _mm256_unpackhi_ps(fz, fa);
+        const __m256 r[4] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE),
+                             _mm256_shuffle_ps(t1, t3, 0x44), _mm256_shuffle_ps(t1, t3, 0xEE)};  // records l, l + 4
+        for (std::size_t l = 0; l < count; ++l)
+          _mm_store_ps(records_[index[l]].v, l < 4 ? _mm256_castps256_ps128(r[l]) : _mm256_extractf128_ps(r[l - 4], 1));
+      } else {
+        const __m512d a = t - SimdDouble(clock_origin_);
+        const __m512d xy0 = _mm512_unpacklo_pd(x, y), xy1 = _mm512_unpackhi_pd(x, y);  // x0 y0 x2 y2 ... | x1 y1 x3 y3 ...
+        const __m512d za0 = _mm512_unpacklo_pd(z, a), za1 = _mm512_unpackhi_pd(z, a);  // z0 a0 z2 a2 ... | z1 a1 z3 a3 ...
+        const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), second = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
+        const __m512d r[4] = {_mm512_permutex2var_pd(xy0, first, za0), _mm512_permutex2var_pd(xy1, first, za1),
+                              _mm512_permutex2var_pd(xy0, second, za0), _mm512_permutex2var_pd(xy1, second, za1)};
+        for (std::size_t l = 0; l < count; ++l) {  // records 0, 2 | 1, 3 | 4, 6 | 5, 7
+          const __m512d& pair = r[(l & 1u) + 2 * (l / 4)];
+          _mm256_store_pd(records_[index[l]].v, (l / 2) % 2 == 0 ? _mm512_castpd512_pd256(pair) : _mm512_extractf64x4_pd(pair, 1));
+        }
+      }
+    } else {
+      alignas(64) double lx[w], ly[w], lz[w], lt[w];
+      x.store_aligned(lx), y.store_aligned(ly), z.store_aligned(lz), t.store_aligned(lt);
+      for (std::size_t l = 0; l < count; ++l) {
+        set_velocity(index[l], {lx[l], ly[l], lz[l]});
+        set_last_update(index[l], lt[l]);
+      }
+    }
+  }
+
+#pragma GCC diagnostic pop
 
   /// Applies f(Vec3&) to every velocity in storage order.
   template <class F>

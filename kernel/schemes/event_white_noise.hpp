@@ -265,40 +265,28 @@ class BasicEventWhiteNoise {
       time[active] = now;
     }
     if (active == 0) return 0;
-    // The pairs' records, component by component
-    alignas(64) std::array<double, lanes> ti, xi, yi, zi, tj, xj, yj, zj;
-    for (std::size_t l = 0; l < lanes; ++l) {
-      const std::size_t i = batch.i[k + l], j = batch.j[k + l];
-      const Vec3 vi = store.velocity(i), vj = store.velocity(j);
-      ti[l] = store.last_update(i);
-      tj[l] = store.last_update(j);
-      xi[l] = vi.x, yi[l] = vi.y, zi[l] = vi.z;
-      xj[l] = vj.x, yj[l] = vj.y, zj[l] = vj.z;
-    }
+    // The pairs a batch ahead, half now and half below, so that the misses do not come all at once (a
+    // register stopped early prefetches some of its slots twice)
+    for (std::size_t l = 0; l < lanes / 2; ++l) prefetch_pair(batches_[current_ ^ 1u], k + l);
+    SimdDouble xi, yi, zi, ti, xj, yj, zj, tj;
+    store.load_lanes(&batch.i[k], xi, yi, zi, ti);
+    store.load_lanes(&batch.j[k], xj, yj, zj, tj);
     // Steps 2.5-2.6: v += sqrt(2 beta s) xi where s > 0 (001 eq. 23), rounded as the store rounds
     const SimdDouble t = SimdDouble::load_aligned(time.data());
     constexpr std::size_t b = batch_size;
     const auto& z1 = batch.normal1;
     const auto& z2 = batch.normal2;
-    auto brownian = [&](const std::array<double, lanes>& last, std::array<double, lanes>& x,
-                        std::array<double, lanes>& y, std::array<double, lanes>& z, const double* nx,
+    auto brownian = [&](const SimdDouble& last, SimdDouble& x, SimdDouble& y, SimdDouble& z, const double* nx,
                         const double* ny, const double* nz) {
-      const SimdDouble s = t - SimdDouble::load_aligned(last.data());
+      const SimdDouble s = t - last;
       const auto moved = s > SimdDouble(0.0);
       const SimdDouble width = xsimd::sqrt(noise_ * s);
-      auto move = [&](std::array<double, lanes>& c, const double* n) {
-        const SimdDouble old = SimdDouble::load_aligned(c.data());
-        xsimd::select(moved, rounded_to<Real>(old + width * SimdDouble::load_unaligned(n)), old).store_aligned(c.data());
-      };
-      move(x, nx);
-      move(y, ny);
-      move(z, nz);
+      x = xsimd::select(moved, rounded_to<Real>(x + width * SimdDouble::load_unaligned(nx)), x);
+      y = xsimd::select(moved, rounded_to<Real>(y + width * SimdDouble::load_unaligned(ny)), y);
+      z = xsimd::select(moved, rounded_to<Real>(z + width * SimdDouble::load_unaligned(nz)), z);
     };
     brownian(ti, xi, yi, zi, &z1[k], &z2[k], &z1[b + k]);
     brownian(tj, xj, yj, zj, &z2[b + k], &z1[2 * b + k], &z2[2 * b + k]);
-    const SimdDouble vix = SimdDouble::load_aligned(xi.data()), viy = SimdDouble::load_aligned(yi.data()),
-                     viz = SimdDouble::load_aligned(zi.data()), vjx = SimdDouble::load_aligned(xj.data()),
-                     vjy = SimdDouble::load_aligned(yj.data()), vjz = SimdDouble::load_aligned(zj.data());
     // Steps 2.7-2.8 as bits: real, and left to `candidate` (the register stops before it)
     std::uint64_t real = (std::uint64_t{1} << active) - 1, stop = std::uint64_t{1} << active;
     if constexpr (!Kernel::constant_rate) {
@@ -308,8 +296,8 @@ class BasicEventWhiteNoise {
         return dx * dx + dy * dy + dz * dz;
       };
       const SimdDouble below(raise_below());
-      stop |= ~lane_bits((far2(vix, viy, viz) < below) & (far2(vjx, vjy, vjz) < below));
-      const SimdDouble dx = vix - vjx, dy = viy - vjy, dz = viz - vjz;
+      stop |= ~lane_bits((far2(xi, yi, zi) < below) & (far2(xj, yj, zj) < below));
+      const SimdDouble dx = xi - xj, dy = yi - yj, dz = zi - zj;
       const SimdDouble g2 = dx * dx + dy * dy + dz * dz;
       const SimdDouble accept = SimdDouble::load_unaligned(&batch.threshold[k]) * majorant_, accept2 = accept * accept;
       const auto fictitious = g2 < accept2 * (1.0 - rounding_margin);
@@ -317,33 +305,37 @@ class BasicEventWhiteNoise {
       real &= lane_bits(certain);
       stop |= ~lane_bits(fictitious | certain);
     }
-    const std::size_t first_stop = static_cast<std::size_t>(std::countr_zero(stop));
-    // In order: the records, and steps 2.9-2.10 for the real candidates
-    for (std::size_t l = 0; l < first_stop; ++l) {
-      prefetch_pair(batches_[current_ ^ 1u], k + l);
-      const std::size_t i = batch.i[k + l], j = batch.j[k + l];
-      Vec3 vi{xi[l], yi[l], zi[l]}, vj{xj[l], yj[l], zj[l]};
-      store.set_last_update(i, time[l]);
-      store.set_last_update(j, time[l]);
-      ++tally_.candidates;
-      if (((real >> l) & 1u) == 0) {
-        store.set_velocity(i, vi);
-        store.set_velocity(j, vj);
-        continue;
-      }
-      isotropic_scattering(vi, vj, {batch.ex[k + l], batch.ey[k + l], batch.ez[k + l]}, alpha_);  // step 2.9
-      store.set_velocity(i, vi);
-      store.set_velocity(j, vj);
-      ++tally_.collisions;
-      if constexpr (!Kernel::constant_rate) {
-        if (raise_majorant(store.velocity(i), store.velocity(j))) {  // step 2.10
-          state_.time = time[l];
-          return l + 1;
+    for (std::size_t l = lanes / 2; l < lanes; ++l) prefetch_pair(batches_[current_ ^ 1u], k + l);
+    std::size_t done = static_cast<std::size_t>(std::countr_zero(stop));
+    // Steps 2.9-2.10 in order for the real candidates before the stop; a raise at 2.10 ends the register
+    if (std::uint64_t collide = real & ((std::uint64_t{1} << done) - 1); collide != 0) {
+      alignas(64) std::array<double, lanes> ax, ay, az, bx, by, bz;
+      xi.store_aligned(ax.data()), yi.store_aligned(ay.data()), zi.store_aligned(az.data());
+      xj.store_aligned(bx.data()), yj.store_aligned(by.data()), zj.store_aligned(bz.data());
+      for (; collide != 0; collide &= collide - 1) {
+        const std::size_t l = static_cast<std::size_t>(std::countr_zero(collide));
+        Vec3 vi{ax[l], ay[l], az[l]}, vj{bx[l], by[l], bz[l]};
+        isotropic_scattering(vi, vj, {batch.ex[k + l], batch.ey[k + l], batch.ez[k + l]}, alpha_);  // step 2.9
+        vi = Store::as_stored(vi);
+        vj = Store::as_stored(vj);
+        ax[l] = vi.x, ay[l] = vi.y, az[l] = vi.z;
+        bx[l] = vj.x, by[l] = vj.y, bz[l] = vj.z;
+        ++tally_.collisions;
+        if constexpr (!Kernel::constant_rate) {
+          if (raise_majorant(vi, vj)) {  // step 2.10
+            done = l + 1;
+            break;
+          }
         }
       }
+      xi = SimdDouble::load_aligned(ax.data()), yi = SimdDouble::load_aligned(ay.data()), zi = SimdDouble::load_aligned(az.data());
+      xj = SimdDouble::load_aligned(bx.data()), yj = SimdDouble::load_aligned(by.data()), zj = SimdDouble::load_aligned(bz.data());
     }
-    if (first_stop != 0) state_.time = time[first_stop - 1];
-    return first_stop;
+    store.store_lanes(&batch.i[k], done, xi, yi, zi, t);
+    store.store_lanes(&batch.j[k], done, xj, yj, zj, t);
+    tally_.candidates += done;
+    if (done != 0) state_.time = time[done - 1];
+    return done;
   }
 
   /// One candidate at state_.time: 001 steps 2.5-2.10, with slot k of the batch.
