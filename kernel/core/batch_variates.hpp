@@ -36,9 +36,12 @@ inline xsimd::batch<double, Arch> fused_multiply_add(const xsimd::batch<double, 
                                                      const xsimd::batch<double, Arch>& y,
                                                      const xsimd::batch<double, Arch>& z) noexcept {
   using Batch = xsimd::batch<double, Arch>;
+#if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     return _mm512_fmadd_pd(x, y, z);
-  } else if constexpr (std::is_base_of_v<xsimd::fma3<xsimd::sse4_2>, Arch> ||
+  } else
+#endif
+  if constexpr (std::is_base_of_v<xsimd::fma3<xsimd::sse4_2>, Arch> ||
                        std::is_base_of_v<xsimd::fma3<xsimd::avx>, Arch> ||
                        std::is_base_of_v<xsimd::fma3<xsimd::avx2>, Arch>) {
     return xsimd::fma(x, y, z);

@@ -123,18 +123,30 @@ class RandomStream {
   template <class Arch>
   static xsimd::batch<std::uint64_t, Arch> product_32(const xsimd::batch<std::uint64_t, Arch>& a,
                                                       const xsimd::batch<std::uint64_t, Arch>& b) noexcept {
+#if XSIMD_WITH_AVX512F
     if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) return _mm512_mul_epu32(a, b);
-    else if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) return _mm256_mul_epu32(a, b);
-    else if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) return _mm_mul_epu32(a, b);
-    else return a * b;
+    else
+#endif
+#if XSIMD_WITH_AVX2
+    if constexpr (std::is_base_of_v<xsimd::avx2, Arch>) return _mm256_mul_epu32(a, b);
+    else
+#endif
+#if XSIMD_WITH_SSE2
+    if constexpr (std::is_base_of_v<xsimd::sse2, Arch>) return _mm_mul_epu32(a, b);
+    else
+#endif
+      return a * b;
   }
 
   /// The 32-bit values of the lanes, stored to out[0 .. size).
   template <class Arch>
   static void store_words(const xsimd::batch<std::uint64_t, Arch>& x, std::uint32_t* out) noexcept {
+#if XSIMD_WITH_AVX512F
     if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm512_cvtepi64_epi32(x));
-    } else {
+    } else
+#endif
+    {
       alignas(64) std::uint64_t lanes[xsimd::batch<std::uint64_t, Arch>::size];
       x.store_aligned(lanes);
       for (std::size_t k = 0; k < std::size(lanes); ++k) out[k] = static_cast<std::uint32_t>(lanes[k]);

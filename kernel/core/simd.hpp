@@ -21,13 +21,21 @@ namespace granmc {
 using SimdDouble = xsimd::batch<double>;  // the widest registers the build targets
 
 /// Bit k set where !(a[k] > b[k]) (so also where either is NaN), for the SIMD width's lanes.
+/// (Here and below, a branch for an instruction set is compiled only where the build enables it: the
+/// intrinsics' names exist only there. `make portable-test` builds the tests without them.)
 template <class Arch>
 inline std::uint64_t not_greater_bits(const xsimd::batch<double, Arch>& a, const xsimd::batch<double, Arch>& b) noexcept {
+#if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     return _mm512_cmp_pd_mask(a, b, _CMP_NGT_UQ);
-  } else if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
+  } else
+#endif
+#if XSIMD_WITH_AVX
+  if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
     return static_cast<std::uint64_t>(_mm256_movemask_pd(_mm256_cmp_pd(a, b, _CMP_NGT_UQ)));
-  } else {
+  } else
+#endif
+  {
     alignas(64) double x[xsimd::batch<double, Arch>::size], y[xsimd::batch<double, Arch>::size];
     a.store_aligned(x);
     b.store_aligned(y);
@@ -40,11 +48,17 @@ inline std::uint64_t not_greater_bits(const xsimd::batch<double, Arch>& a, const
 /// Bit k set where lane k of the mask is true, for the SIMD width's lanes.
 template <class Arch>
 inline std::uint64_t lane_bits(const xsimd::batch_bool<double, Arch>& mask) noexcept {
+#if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     return static_cast<__mmask8>(mask);
-  } else if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
+  } else
+#endif
+#if XSIMD_WITH_AVX
+  if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
     return static_cast<std::uint64_t>(_mm256_movemask_pd(mask));
-  } else {
+  } else
+#endif
+  {
     alignas(64) bool x[xsimd::batch_bool<double, Arch>::size];
     mask.store_aligned(x);
     std::uint64_t bits = 0;
@@ -60,15 +74,22 @@ inline xsimd::batch<double, Arch> rounded_to(const xsimd::batch<double, Arch>& x
   static_assert(std::is_same_v<Real, double> || std::is_same_v<Real, float>);
   if constexpr (std::is_same_v<Real, double>) {
     return x;
-  } else if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
+  } else
+#if XSIMD_WITH_AVX512F
+  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"  // as for xsimd's include, above
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
     return _mm512_cvtps_pd(_mm512_cvtpd_ps(x));
 #pragma GCC diagnostic pop
-  } else if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
+  } else
+#endif
+#if XSIMD_WITH_AVX
+  if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
     return _mm256_cvtps_pd(_mm256_cvtpd_ps(x));
-  } else {
+  } else
+#endif
+  {
     alignas(64) double v[xsimd::batch<double, Arch>::size];
     x.store_aligned(v);
     for (double& d : v) d = rounded_float(d);

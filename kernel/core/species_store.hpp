@@ -90,9 +90,13 @@ class BasicSpeciesStore {
   /// A register of particles (the event scheme's candidates, one particle per lane): lane l of
   /// x, y, z is particle index[l]'s velocity and lane l of t its last update. With AVX-512 the records are
   /// loaded whole and transposed; otherwise lane by lane.
-  void load_lanes(const std::size_t* index, SimdDouble& x, SimdDouble& y, SimdDouble& z, SimdDouble& t) const noexcept {
-    constexpr std::size_t w = SimdDouble::size;
-    if constexpr (w == 8 && std::is_base_of_v<xsimd::avx512f, SimdDouble::arch_type>) {
+  template <class Arch>
+  void load_lanes(const std::size_t* index, xsimd::batch<double, Arch>& x, xsimd::batch<double, Arch>& y,
+                  xsimd::batch<double, Arch>& z, xsimd::batch<double, Arch>& t) const noexcept {
+    using Batch = xsimd::batch<double, Arch>;
+    constexpr std::size_t w = Batch::size;
+#if XSIMD_WITH_AVX512F
+    if constexpr (w == 8 && std::is_base_of_v<xsimd::avx512f, Arch>) {
       if constexpr (std::is_same_v<Real, float>) {  // 8 records of 4 floats: two per 256-bit register
         auto pair = [&](std::size_t a) {
           return _mm256_set_m128(_mm_load_ps(records_[index[a + 4]].v), _mm_load_ps(records_[index[a]].v));
@@ -103,7 +107,7 @@ class BasicSpeciesStore {
         x = _mm512_cvtps_pd(_mm256_shuffle_ps(t0, t2, 0x44));
         y = _mm512_cvtps_pd(_mm256_shuffle_ps(t0, t2, 0xEE));
         z = _mm512_cvtps_pd(_mm256_shuffle_ps(t1, t3, 0x44));
-        t = SimdDouble(clock_origin_) + SimdDouble(_mm512_cvtps_pd(_mm256_shuffle_ps(t1, t3, 0xEE)));
+        t = Batch(clock_origin_) + Batch(_mm512_cvtps_pd(_mm256_shuffle_ps(t1, t3, 0xEE)));
       } else {  // 8 records of 4 doubles: two per 512-bit register
         auto pair = [&](std::size_t a) {
           return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_load_pd(records_[index[a]].v)),
@@ -116,27 +120,33 @@ class BasicSpeciesStore {
         x = _mm512_permutex2var_pd(t0, low, t2);
         z = _mm512_permutex2var_pd(t0, high, t2);
         y = _mm512_permutex2var_pd(t1, low, t3);
-        t = SimdDouble(clock_origin_) + SimdDouble(_mm512_permutex2var_pd(t1, high, t3));  // as last_update adds it
+        t = Batch(clock_origin_) + Batch(_mm512_permutex2var_pd(t1, high, t3));  // as last_update adds it
       }
-    } else {
+    } else
+#endif
+    {
       alignas(64) double lx[w], ly[w], lz[w], lt[w];
       for (std::size_t l = 0; l < w; ++l) {
         const Vec3 v = velocity(index[l]);
         lx[l] = v.x, ly[l] = v.y, lz[l] = v.z, lt[l] = last_update(index[l]);
       }
-      x = SimdDouble::load_aligned(lx), y = SimdDouble::load_aligned(ly), z = SimdDouble::load_aligned(lz);
-      t = SimdDouble::load_aligned(lt);
+      x = Batch::load_aligned(lx), y = Batch::load_aligned(ly), z = Batch::load_aligned(lz);
+      t = Batch::load_aligned(lt);
     }
   }
   /// Stores lanes l < count: particle index[l] gets velocity (x, y, z) and last update t, each rounded
   /// to the storage precision as set_velocity and set_last_update round.
-  void store_lanes(const std::size_t* index, std::size_t count, const SimdDouble& x, const SimdDouble& y,
-                   const SimdDouble& z, const SimdDouble& t) noexcept {
-    constexpr std::size_t w = SimdDouble::size;
-    if constexpr (w == 8 && std::is_base_of_v<xsimd::avx512f, SimdDouble::arch_type>) {
+  template <class Arch>
+  void store_lanes(const std::size_t* index, std::size_t count, const xsimd::batch<double, Arch>& x,
+                   const xsimd::batch<double, Arch>& y, const xsimd::batch<double, Arch>& z,
+                   const xsimd::batch<double, Arch>& t) noexcept {
+    using Batch = xsimd::batch<double, Arch>;
+    constexpr std::size_t w = Batch::size;
+#if XSIMD_WITH_AVX512F
+    if constexpr (w == 8 && std::is_base_of_v<xsimd::avx512f, Arch>) {
       if constexpr (std::is_same_v<Real, float>) {
         const __m256 fx = _mm512_cvtpd_ps(x), fy = _mm512_cvtpd_ps(y), fz = _mm512_cvtpd_ps(z);
-        const __m256 fa = _mm512_cvtpd_ps(t - SimdDouble(clock_origin_));
+        const __m256 fa = _mm512_cvtpd_ps(t - Batch(clock_origin_));
         const __m256 t0 = _mm256_unpacklo_ps(fx, fy), t1 = _mm256_unpackhi_ps(fx, fy);  // x0 y0 x1 y1 | x4 y4 x5 y5
         const __m256 t2 = _mm256_unpacklo_ps(fz, fa), t3 = _mm256_unpackhi_ps(fz, fa);
         const __m256 r[4] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE),
@@ -144,7 +154,7 @@ class BasicSpeciesStore {
         for (std::size_t l = 0; l < count; ++l)
           _mm_store_ps(records_[index[l]].v, l < 4 ? _mm256_castps256_ps128(r[l]) : _mm256_extractf128_ps(r[l - 4], 1));
       } else {
-        const __m512d a = t - SimdDouble(clock_origin_);
+        const __m512d a = t - Batch(clock_origin_);
         const __m512d xy0 = _mm512_unpacklo_pd(x, y), xy1 = _mm512_unpackhi_pd(x, y);  // x0 y0 x2 y2 ... | x1 y1 x3 y3 ...
         const __m512d za0 = _mm512_unpacklo_pd(z, a), za1 = _mm512_unpackhi_pd(z, a);  // z0 a0 z2 a2 ... | z1 a1 z3 a3 ...
         const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), second = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
@@ -155,7 +165,9 @@ class BasicSpeciesStore {
           _mm256_store_pd(records_[index[l]].v, (l / 2) % 2 == 0 ? _mm512_castpd512_pd256(pair) : _mm512_extractf64x4_pd(pair, 1));
         }
       }
-    } else {
+    } else
+#endif
+    {
       alignas(64) double lx[w], ly[w], lz[w], lt[w];
       x.store_aligned(lx), y.store_aligned(ly), z.store_aligned(lz), t.store_aligned(lt);
       for (std::size_t l = 0; l < count; ++l) {

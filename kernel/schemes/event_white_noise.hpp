@@ -109,6 +109,8 @@ class BasicEventWhiteNoise {
     Store& store = state_.species[0];
     for (;;) {
       const DrawBatch& batch = batches_[current_];
+      // A register of candidates at once where the batch has one left (and the noise needs the updates
+      // that pay for it), else one candidate
       if (in_registers && noise_ != 0.0 && slot_ + lanes <= batch_size) {
         const std::size_t done = candidates_in_simd(store, batch, slot_, t);
         for (std::size_t k = 0; k < done; ++k) next_slot();
