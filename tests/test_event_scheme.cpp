@@ -5,13 +5,14 @@
 //  - elastic hard spheres in equilibrium: the real-collision rate is 2 pi rate (n - 1) <|u|>, which
 //    checks the thinning of 001 eqs. (25-26);
 //  - hard cases: one particle at 1000 times the thermal speed (energy and momentum conserved to rounding
-//    when elastic and unheated, the majorant grows without a violation); strong heating with lambda = 1.
+//    when elastic and unheated, the majorant grows without a violation); strong heating with lambda = 1;
+//  - the candidates a register at a time: the same bits as one by one.
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
-#include <string>
 #include <numbers>
+#include <string>
 #include <utility>
 
 #include "kernel/collide/isotropic_kernels.hpp"
