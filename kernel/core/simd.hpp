@@ -20,32 +20,9 @@ namespace granmc {
 
 using SimdDouble = xsimd::batch<double>;  // the widest registers the build targets
 
-/// Bit k set where !(a[k] > b[k]) (so also where either is NaN), for the SIMD width's lanes.
+/// Bit k set where lane k of the mask is true, for the SIMD width's lanes.
 /// (Here and below, a branch for an instruction set is compiled only where the build enables it: the
 /// intrinsics' names exist only there. `make portable-test` builds the tests without them.)
-template <class Arch>
-inline std::uint64_t not_greater_bits(const xsimd::batch<double, Arch>& a, const xsimd::batch<double, Arch>& b) noexcept {
-#if XSIMD_WITH_AVX512F
-  if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
-    return _mm512_cmp_pd_mask(a, b, _CMP_NGT_UQ);
-  } else
-#endif
-#if XSIMD_WITH_AVX
-  if constexpr (std::is_base_of_v<xsimd::avx, Arch>) {
-    return static_cast<std::uint64_t>(_mm256_movemask_pd(_mm256_cmp_pd(a, b, _CMP_NGT_UQ)));
-  } else
-#endif
-  {
-    alignas(64) double x[xsimd::batch<double, Arch>::size], y[xsimd::batch<double, Arch>::size];
-    a.store_aligned(x);
-    b.store_aligned(y);
-    std::uint64_t bits = 0;
-    for (std::size_t k = 0; k < std::size(x); ++k) bits |= static_cast<std::uint64_t>(!(x[k] > y[k])) << k;
-    return bits;
-  }
-}
-
-/// Bit k set where lane k of the mask is true, for the SIMD width's lanes.
 template <class Arch>
 inline std::uint64_t lane_bits(const xsimd::batch_bool<double, Arch>& mask) noexcept {
 #if XSIMD_WITH_AVX512F
@@ -65,6 +42,12 @@ inline std::uint64_t lane_bits(const xsimd::batch_bool<double, Arch>& mask) noex
     for (std::size_t k = 0; k < std::size(x); ++k) bits |= static_cast<std::uint64_t>(x[k]) << k;
     return bits;
   }
+}
+
+/// Bit k set where !(a[k] > b[k]) (so also where either is NaN), for the SIMD width's lanes.
+template <class Arch>
+inline std::uint64_t not_greater_bits(const xsimd::batch<double, Arch>& a, const xsimd::batch<double, Arch>& b) noexcept {
+  return lane_bits(!(a > b));
 }
 
 /// x rounded to Real (float: to nearest) and widened to double again, lane by lane: the value a store of
