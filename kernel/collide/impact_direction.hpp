@@ -20,12 +20,26 @@ struct ImpactDirection {
   double g_sigma;  // g.sigma; not > 0 (or NaN) only when g + |g| n = 0, a case of probability zero
 };
 
+/// impact_direction component by component, for a double or an xsimd batch of them (a register of
+/// candidates, each lane the same bits as impact_direction on it): sigma-hat = (sx, sy, sz), g.sigma.
+template <class T>
+void impact_direction_components(const T& gx, const T& gy, const T& gz, const T& g_norm, const T& nx, const T& ny,
+                                 const T& nz, T& sx, T& sy, T& sz, T& g_sigma) noexcept {
+  using std::sqrt;  // xsimd's for a batch
+  const T hx = gx + g_norm * nx, hy = gy + g_norm * ny, hz = gz + g_norm * nz;
+  const T inverse = 1.0 / sqrt(hx * hx + hy * hy + hz * hz);
+  sx = inverse * hx;
+  sy = inverse * hy;
+  sz = inverse * hz;
+  g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
+}
+
 /// sigma-hat with density proportional to Theta(g.sigma) (g.sigma), from n uniform on the unit sphere;
 /// g_norm = |g|. Computed as h = g + |g| n (= |g| (g-hat + n)), sigma-hat = h / |h|, g.sigma = g.h / |h|.
 inline ImpactDirection impact_direction(const Vec3& g, double g_norm, const Vec3& n) noexcept {
-  const Vec3 h = g + g_norm * n;
-  const double inverse = 1.0 / std::sqrt(norm2(h));
-  return {inverse * h, inverse * dot(g, h)};
+  ImpactDirection d;
+  impact_direction_components(g.x, g.y, g.z, g_norm, n.x, n.y, n.z, d.sigma.x, d.sigma.y, d.sigma.z, d.g_sigma);
+  return d;
 }
 
 }  // namespace granmc

@@ -202,46 +202,20 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       unit_vectors(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2), std::span(d.sx),
                    std::span(d.sy), std::span(d.sz));
   };
-  // Candidate b of batch d in full: the acceptance, then the collision (000 sec. 3, steps 2-3). Its
-  // direction n is (nx, ny, nz)[e].
-  auto test_and_collide = [&](const Drawn& d, std::uint64_t b, const Lanes& nx, const Lanes& ny, const Lanes& nz,
-                              std::size_t e) {
+  // The acceptance of a candidate of pair q with rate omega and uniform u (000 sec. 3, step 2): when
+  // omega exceeds the majorant, accepted and omega_max^(ij) := omega.
+  auto accepted = [&](std::size_t q, double omega, double u) {
+    if (omega > majorant[q]) {
+      majorant[q] = omega;
+      ++tally[q].majorant_updates;
+      return true;
+    }
+    return !(u * majorant[q] > omega);
+  };
+  // The collision of candidate b of batch d along sigma-hat (000 sec. 3, step 3; eqs. 14-15).
+  auto collide = [&](const Drawn& d, std::uint64_t b, Vec3 vk, Vec3 vl, const Vec3& sigma, double g_sigma) {
     const std::size_t q = one_pair ? 0 : d.qs[b];
     const PairCoefficients& p = one_pair ? only_pair : pairs[q];
-    Vec3 vk = d.pk[b].velocity();
-    Vec3 vl = d.pl[b].velocity();
-    // n, uniform on the sphere, is read where it is used: read before the acceptance it
-    // holds registers the one-pair loop needs (callgrind, docs/performance.md).
-    Vec3 sigma;
-    double g_sigma;
-    if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
-      sigma = {nx[e], ny[e], nz[e]};
-      const Vec3 g = shift.relative_velocity(vk, vl, sigma, p);
-      g_sigma = dot(g, sigma);
-      if (g_sigma <= 0.0) return;  // Theta(g.sigma): the pair is separating along sigma-hat
-      const double omega = p.rate_prefactor * kernel.rate(g_sigma, norm2(g));
-      if (omega > majorant[q]) {
-        majorant[q] = omega;
-        ++tally[q].majorant_updates;
-      } else if (d.accept[b] * majorant[q] > omega) {
-        return;
-      }
-    } else {  // the mean over sigma-hat first, then sigma-hat given the collision
-      const Vec3 g = vk - vl;
-      const double g2 = norm2(g);
-      // Maxwell: omega = omega_max (majorant_bound), so every candidate passes the test (u < 1).
-      const double omega = p.rate_prefactor * kernel.mean_rate(g2);
-      if (omega > majorant[q]) {
-        majorant[q] = omega;
-        ++tally[q].majorant_updates;
-      } else if (d.accept[b] * majorant[q] > omega) {
-        return;
-      }
-      const ImpactDirection id = impact_direction(g, std::sqrt(g2), {nx[e], ny[e], nz[e]});
-      if (!(id.g_sigma > 0.0)) return;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
-      sigma = id.sigma;
-      g_sigma = id.g_sigma;
-    }
     inelastic_collision(vk, vl, sigma, g_sigma, p);
     d.pk[b].set_velocity(vk);
     d.pl[b].set_velocity(vl);
@@ -252,6 +226,35 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       tally[q].twice_energy_shear_work -= 2.0 * impulse * p.diameter * shift.rate * sigma.x * sigma.y;
       tally[q].transfer += weighted_dyad(impulse * p.diameter, sigma);
     }
+  };
+  // Candidate b of batch d in full: the acceptance, then the collision. Its direction n is (nx, ny, nz)[e].
+  auto test_and_collide = [&](const Drawn& d, std::uint64_t b, const Lanes& nx, const Lanes& ny, const Lanes& nz,
+                              std::size_t e) {
+    const std::size_t q = one_pair ? 0 : d.qs[b];
+    const PairCoefficients& p = one_pair ? only_pair : pairs[q];
+    const Vec3 vk = d.pk[b].velocity();
+    const Vec3 vl = d.pl[b].velocity();
+    // n, uniform on the sphere, is read where it is used: read before the acceptance it
+    // holds registers the one-pair loop needs (callgrind, docs/performance.md).
+    Vec3 sigma;
+    double g_sigma;
+    if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
+      sigma = {nx[e], ny[e], nz[e]};
+      const Vec3 g = shift.relative_velocity(vk, vl, sigma, p);
+      g_sigma = dot(g, sigma);
+      if (g_sigma <= 0.0) return;  // Theta(g.sigma): the pair is separating along sigma-hat
+      if (!accepted(q, p.rate_prefactor * kernel.rate(g_sigma, norm2(g)), d.accept[b])) return;
+    } else {  // the mean over sigma-hat first, then sigma-hat given the collision
+      const Vec3 g = vk - vl;
+      const double g2 = norm2(g);
+      // Maxwell: omega = omega_max (majorant_bound), so every candidate passes the test (u < 1).
+      if (!accepted(q, p.rate_prefactor * kernel.mean_rate(g2), d.accept[b])) return;
+      const ImpactDirection id = impact_direction(g, std::sqrt(g2), {nx[e], ny[e], nz[e]});
+      if (!(id.g_sigma > 0.0)) return;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
+      sigma = id.sigma;
+      g_sigma = id.g_sigma;
+    }
+    collide(d, b, vk, vl, sigma, g_sigma);
   };
   // The screen (a kernel whose rate varies): before batch d's candidates act, all of them are tested at
   // once on the velocities as they are then, and only those it cannot reject go through
@@ -275,6 +278,9 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     return (reinterpret_cast<std::uintptr_t>(p.address()) >> 4) & ((std::uintptr_t{1} << slots_log2) - 1);
   };
   Lanes g2{}, threshold{}, prefactor{}, omega{};  // initialised: lanes past a partial batch
+  // Bit b set: candidate b of the batch screened last shares a particle (or a slot of `seen`) with an
+  // earlier candidate of its batch.
+  std::uint64_t shared = 0;
   // Bit b set: candidate b of d needs test_and_collide. Candidate b prefetches candidate b of the next
   // batch (m_next of them), as the loop below does without the screen.
   auto screen = [&](const Drawn& d, std::uint64_t m, const Drawn& next, std::uint64_t m_next) {
@@ -282,6 +288,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
       seen.fill(0);
       stamp = 1;
     }
+    shared = 0;
     std::uint64_t full_test = 0;
     if constexpr (screened) {  // else not called, and kernel.mean_rate need not take a batch
       for (std::uint64_t b = 0; b < m; ++b) {
@@ -303,7 +310,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
           if constexpr (!one_pair) prefactor[b] = p.rate_prefactor;
         }
         const std::size_t sk = slot(d.pk[b]), sl = slot(d.pl[b]);
-        full_test |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
+        shared |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
         seen[sk] = stamp;
         seen[sl] = stamp;
       }
@@ -322,7 +329,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
         }
         passes |= not_greater_bits(thr, om) << k;
       }
-      full_test |= passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1);
+      full_test = shared | (passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1));
     }
     return full_test;
   };
@@ -332,7 +339,8 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   // misses, the last ones waited a memory latency (as in the event scheme, docs/performance.md).
   std::array<Drawn, 2> drawn{};  // initialised: a last, partial batch converts all lanes
   std::array<std::uint8_t, lanes> which;
-  Lanes nx, ny, nz;
+  Lanes nx, ny, nz;                                      // the directions n of the candidates that passed the screen
+  Lanes gx, gy, gz, g_square, sigma_x, sigma_y, sigma_z, g_sigma;  // and, for those, g and |g|^2, then sigma-hat and g.sigma
   if (total > 0) {
     draw_batch(drawn[0], 0, std::min(batch, total));
     for (std::uint64_t b = 0; b < std::min(batch, total); ++b) {
@@ -352,9 +360,37 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
         test_and_collide(d, b, d.sx, d.sy, d.sz, b);
       }
     } else if constexpr (screened) {
-      // The candidates that passed the screen, in order, and their directions
+      // The candidates that passed the screen, in order, and their directions n. One that shares no
+      // particle with an earlier candidate of the batch has, when its turn comes, the velocities the screen
+      // read: its sigma-hat and g.sigma are computed before the batch collides, a register at a time (the
+      // same bits as impact_direction, so the square roots and divisions of successive collisions no
+      // longer wait on each other), and only its acceptance is left for its turn. The others are tested
+      // in full at their turn.
       const std::size_t passed = selected_unit_vectors(screen(d, m, next, m_next), d.dir1, d.dir2, which, nx, ny, nz);
-      for (std::size_t e = 0; e < passed; ++e) test_and_collide(d, which[e], nx, ny, nz, e);
+      for (std::size_t e = 0; e < passed; ++e) {
+        const Vec3 g = d.pk[which[e]].velocity() - d.pl[which[e]].velocity();
+        gx[e] = g.x, gy[e] = g.y, gz[e] = g.z, g_square[e] = g2[which[e]];
+      }
+      for (std::size_t e = passed; e % SimdDouble::size != 0; ++e) gx[e] = gy[e] = gz[e] = g_square[e] = 1.0;  // unused
+      for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
+        const auto at = [e](const Lanes& a) { return SimdDouble::load_unaligned(&a[e]); };
+        SimdDouble x, y, z, gs;
+        impact_direction_components(at(gx), at(gy), at(gz), sqrt(at(g_square)), at(nx), at(ny), at(nz), x, y, z, gs);
+        x.store_unaligned(&sigma_x[e]), y.store_unaligned(&sigma_y[e]), z.store_unaligned(&sigma_z[e]);
+        gs.store_unaligned(&g_sigma[e]);
+      }
+      for (std::size_t e = 0; e < passed; ++e) {
+        const std::uint64_t b = which[e];
+        if ((shared >> b) & 1u) {
+          test_and_collide(d, b, nx, ny, nz, e);
+          continue;
+        }
+        const std::size_t q = one_pair ? 0 : d.qs[b];
+        const PairCoefficients& p = one_pair ? only_pair : pairs[q];
+        if (!accepted(q, p.rate_prefactor * kernel.mean_rate(g2[b]), d.accept[b])) continue;
+        if (!(g_sigma[e] > 0.0)) continue;  // as in test_and_collide
+        collide(d, b, d.pk[b].velocity(), d.pl[b].velocity(), {sigma_x[e], sigma_y[e], sigma_z[e]}, g_sigma[e]);
+      }
     } else {
       for (std::uint64_t b = 0; b < m; ++b) {
         if (b < m_next) {
@@ -380,7 +416,8 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
 /// Candidates are drawn in batches of `batch`: the random blocks, pairs and indices of a batch first, a
 /// batch ahead of their use, with the two velocity records of each candidate prefetched while the batch
 /// before it collides; then the candidates one by one in order (with the acceptance on the mean, only
-/// those a SIMD screen of the batch cannot reject with certainty). Two candidates that share a particle
+/// those a SIMD screen of the batch cannot reject with certainty, and the impact directions of those that
+/// share no particle with an earlier one computed in SIMD beforehand). Two candidates that share a particle
 /// therefore still act in sequence, and the result is the same for every batch size and with or without
 /// the screen (tests/test_collision_stage.cpp); the batches only let the memory loads of different
 /// candidates overlap and the acceptance run in SIMD (perf/bench_collisions.cpp, docs/performance.md).
