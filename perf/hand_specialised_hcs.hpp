@@ -13,7 +13,8 @@
 // each batch is screened in SIMD (omega of all its candidates, the ones rejected with certainty and
 // sharing no particle with an earlier candidate of the batch left out), and candidate b prefetches the
 // records of candidate b of the next batch; the directions of the candidates that pass the screen in
-// SIMD; then those candidates in order. The result is the same bits as collide_step on the same state
+// SIMD, and for those that share no particle with an earlier one sigma-hat and g.sigma too; then those
+// candidates in order. The result is the same bits as collide_step on the same state
 // and seed (checked at the start of bench_effects).
 //
 // What it leaves out of the generic stage: the pair table (the constants are locals), the interleaving
@@ -29,6 +30,7 @@
 #include <numbers>
 #include <span>
 
+#include "kernel/collide/impact_direction.hpp"
 #include "kernel/core/aligned_buffer.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
@@ -106,6 +108,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
   std::array<std::uint8_t, slots> seen{};
   std::uint8_t stamp = 0;
   Lanes g2s{}, sx, sy, sz;
+  Lanes gx_passed, gy_passed, gz_passed, g2_passed, sigma_x, sigma_y, sigma_z, g_sigma_passed;
   std::array<std::uint8_t, batch> which;
   std::array<Drawn, 2> drawn{};
   if (candidates > 0) {
@@ -125,7 +128,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       seen.fill(0);
       stamp = 1;
     }
-    std::uint64_t full_test = 0;
+    std::uint64_t shared = 0;  // bit b: candidate b shares a particle (or a slot) with an earlier one
     for (std::uint64_t b = 0; b < m; ++b) {  // the screen
       if (b < m_next) {
         __builtin_prefetch(v + next.ks[b], 1, 3);
@@ -136,7 +139,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       const double gx = a.x - e.x, gy = a.y - e.y, gz = a.z - e.z;
       g2s[b] = gx * gx + gy * gy + gz * gz;
       const std::uint64_t sk = d.ks[b] & (slots - 1), sl = d.ls[b] & (slots - 1);
-      full_test |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
+      shared |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
       seen[sk] = stamp;
       seen[sl] = stamp;
     }
@@ -146,14 +149,32 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
                                  prefactor * (0.25 * xsimd::sqrt(SimdDouble::load_unaligned(&g2s[k]))) *
                                      (1.0 + rounding_margin))
                 << k;
-    full_test |= passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1);
+    const std::uint64_t full_test = shared | (passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1));
     const std::size_t passed = selected_unit_vectors(full_test, d.dir1, d.dir2, which, sx, sy, sz);
+    // sigma-hat and g.sigma of the candidates that share no particle, from the screen's velocities, a
+    // register at a time (as the stage)
+    for (std::size_t e = 0; e < passed; ++e) {
+      const HandRecord& a = v[d.ks[which[e]]];
+      const HandRecord& f = v[d.ls[which[e]]];
+      gx_passed[e] = a.x - f.x, gy_passed[e] = a.y - f.y, gz_passed[e] = a.z - f.z, g2_passed[e] = g2s[which[e]];
+    }
+    for (std::size_t e = passed; e % SimdDouble::size != 0; ++e)
+      gx_passed[e] = gy_passed[e] = gz_passed[e] = g2_passed[e] = 1.0;
+    for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
+      const auto at = [e](const Lanes& x) { return SimdDouble::load_unaligned(&x[e]); };
+      SimdDouble x, y, z, gs;
+      impact_direction_components(at(gx_passed), at(gy_passed), at(gz_passed), xsimd::sqrt(at(g2_passed)), at(sx),
+                                  at(sy), at(sz), x, y, z, gs);
+      x.store_unaligned(&sigma_x[e]), y.store_unaligned(&sigma_y[e]), z.store_unaligned(&sigma_z[e]);
+      gs.store_unaligned(&g_sigma_passed[e]);
+    }
     for (std::size_t e = 0; e < passed; ++e) {  // the full test, in order
       const std::uint64_t b = which[e];
+      const bool clean = ((shared >> b) & 1u) == 0;
       HandRecord& a = v[d.ks[b]];
       HandRecord& f = v[d.ls[b]];
       const double gx = a.x - f.x, gy = a.y - f.y, gz = a.z - f.z;
-      const double g2 = gx * gx + gy * gy + gz * gz;
+      const double g2 = clean ? g2s[b] : gx * gx + gy * gy + gz * gz;
       const double omega_b = prefactor * (0.25 * std::sqrt(g2));  // the mean of prefactor Theta(g.sigma) g.sigma
       if (omega_b > majorant) {
         majorant = omega_b;  // majorant exceeded: accept and update (000 sec. 3)
@@ -161,11 +182,15 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       } else if (d.accept[b] * majorant > omega_b) {
         continue;
       }
-      const double g_norm = std::sqrt(g2);  // sigma-hat along g-hat + n
-      const double hx = gx + g_norm * sx[e], hy = gy + g_norm * sy[e], hz = gz + g_norm * sz[e];
-      const double inverse = 1.0 / std::sqrt(hx * hx + hy * hy + hz * hz);
-      const Vec3 s{inverse * hx, inverse * hy, inverse * hz};
-      const double g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
+      Vec3 s{sigma_x[e], sigma_y[e], sigma_z[e]};
+      double g_sigma = g_sigma_passed[e];
+      if (!clean) {
+        const double g_norm = std::sqrt(g2);  // sigma-hat along g-hat + n
+        const double hx = gx + g_norm * sx[e], hy = gy + g_norm * sy[e], hz = gz + g_norm * sz[e];
+        const double inverse = 1.0 / std::sqrt(hx * hx + hy * hy + hz * hz);
+        s = {inverse * hx, inverse * hy, inverse * hz};
+        g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
+      }
       if (!(g_sigma > 0.0)) continue;  // g + |g| n = 0: probability zero
       const double h = 0.5 * (one_plus_alpha * g_sigma);  // equal masses: mu = 1/2
       a.x -= h * s.x;                                     // 000 eq. (14)
