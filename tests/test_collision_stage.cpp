@@ -1,7 +1,8 @@
 // The collision stage's batching only reorders memory loads: candidates act in sequence, so the result
 // is the same bits for every batch size, including batches in which candidates share a particle. The
-// screen of a batch's candidates in SIMD leaves out only candidates that the full test would reject: the
-// same bits as the stage without it.
+// screen of a batch's candidates in SIMD leaves out only candidates that the full test would reject, and
+// the impact directions it computes ahead for those that share no particle are the ones the full test
+// would compute: the same bits as the stage without it.
 #include <gtest/gtest.h>
 
 #include "kernel/collide/hard_sphere.hpp"
