@@ -160,37 +160,55 @@ class BasicEventWhiteNoise {
   };
 
   void prepare(DrawBatch& batch, std::uint64_t first) const noexcept {
-    std::array<double, batch_size> e1, e2;
-    std::array<double, 3 * batch_size> u1, u2;
-    // Blocks 0 and 1 of draw first + k are lanes 2k and 2k + 1 (blocks 2 and 3 likewise in `normals`).
-    std::array<std::uint64_t, 2 * batch_size> step, index;
-    for (std::size_t k = 0; k < 2 * batch_size; ++k) {
-      step[k] = first + k / 2;
-      index[k] = k % 2;
+    constexpr std::size_t b = batch_size;
+    std::array<double, b> e1, e2;
+    std::array<double, 3 * b> u1, u2;
+    // Blocks 0 and 1 of draw first + k are lanes k and b + k (blocks 2 and 3 likewise in `normals`): each
+    // kind of word in consecutive lanes, so that its conversions run in SIMD.
+    std::array<std::uint64_t, 2 * b> step, index;
+    for (std::size_t k = 0; k < 2 * b; ++k) {
+      step[k] = first + k % b;
+      index[k] = k / b;
     }
-    const RandomBlocks<2 * batch_size> b = rng_.blocks(RngPurpose::event_candidate, 0, step, index);
-    for (std::size_t k = 0; k < batch_size; ++k) {
-      const std::size_t b0 = 2 * k, b1 = 2 * k + 1;
-      const auto& w = b.word;
-      batch.wait[k] = uniform_open(w[0][b0]);
-      batch.i[k] = uniform_index(w[1][b0], w[2][b0], particles_);  // step 2.3
-      const std::size_t j = uniform_index(w[0][b1], w[1][b1], particles_ - 1);
-      batch.j[k] = j + (j >= batch.i[k] ? 1 : 0);  // step 2.4: uniform on j != i
-      batch.threshold[k] = uniform_open(w[3][b0]);
-      e1[k] = uniform_open(w[2][b1]);
-      e2[k] = uniform_open(w[3][b1]);
+    const RandomBlocks<2 * b> blocks = rng_.blocks(RngPurpose::event_candidate, 0, step, index);
+    const auto& w = blocks.word;
+    auto words = [&](std::size_t word, std::size_t block) {
+      return std::span<const std::uint32_t, b>(&w[word][block * b], b);
+    };
+    // Steps 2.3-2.4: i uniform, j uniform on the n - 1 others; lane by lane (uniform_indices) while
+    // n < 2^32, the same values as uniform_index
+    std::array<std::uint64_t, b> is, js;
+    if (particles_ < (std::uint64_t{1} << 32)) {
+      std::array<std::uint32_t, b> n, n_others;
+      n.fill(static_cast<std::uint32_t>(particles_));
+      n_others.fill(static_cast<std::uint32_t>(particles_ - 1));
+      uniform_indices(words(1, 0), words(2, 0), n, is);
+      uniform_indices(words(0, 1), words(1, 1), n_others, js);
+    } else {
+      for (std::size_t k = 0; k < b; ++k) {
+        is[k] = uniform_index(w[1][k], w[2][k], particles_);
+        js[k] = uniform_index(w[0][b + k], w[1][b + k], particles_ - 1);
+      }
+    }
+    for (std::size_t k = 0; k < b; ++k) {
+      batch.i[k] = is[k];
+      batch.j[k] = js[k] + (js[k] >= is[k] ? 1 : 0);  // step 2.4: uniform on j != i
+      batch.wait[k] = uniform_open(w[0][k]);
+      batch.threshold[k] = uniform_open(w[3][k]);
+      e1[k] = uniform_open(w[2][b + k]);
+      e2[k] = uniform_open(w[3][b + k]);
     }
     if (noise_ != 0.0) {
-      for (std::size_t k = 0; k < 2 * batch_size; ++k) index[k] = 2 + k % 2;
-      const RandomBlocks<2 * batch_size> normals = rng_.blocks(RngPurpose::event_candidate, 0, step, index);
+      for (std::size_t k = 0; k < 2 * b; ++k) index[k] = 2 + k / b;
+      const RandomBlocks<2 * b> normals = rng_.blocks(RngPurpose::event_candidate, 0, step, index);
       const auto& z = normals.word;
-      for (std::size_t k = 0; k < batch_size; ++k) {  // pairs (z0[0], z0[1]), (z0[2], z0[3]), (z1[0], z1[1])
-        u1[k] = uniform_open(z[0][2 * k]);
-        u2[k] = uniform_open(z[1][2 * k]);
-        u1[batch_size + k] = uniform_open(z[2][2 * k]);
-        u2[batch_size + k] = uniform_open(z[3][2 * k]);
-        u1[2 * batch_size + k] = uniform_open(z[0][2 * k + 1]);
-        u2[2 * batch_size + k] = uniform_open(z[1][2 * k + 1]);
+      for (std::size_t k = 0; k < b; ++k) {  // pairs (z2[0], z2[1]), (z2[2], z2[3]), (z3[0], z3[1])
+        u1[k] = uniform_open(z[0][k]);
+        u2[k] = uniform_open(z[1][k]);
+        u1[b + k] = uniform_open(z[2][k]);
+        u2[b + k] = uniform_open(z[3][k]);
+        u1[2 * b + k] = uniform_open(z[0][b + k]);
+        u2[2 * b + k] = uniform_open(z[1][b + k]);
       }
     }
     negative_log_in_place(std::span(batch.wait));
