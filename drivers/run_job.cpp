@@ -67,9 +67,11 @@ bool rank0_value(bool value) {
 
 JobResult run_job(const Scene& scene, const JobOutputs& outputs, int threads, bool quiet, bool spread_particles) {
   const Place at = place();
-  const bool show_progress = at.rank == 0 && !quiet && isatty(STDERR_FILENO);
+  const ProgressLine::Mode progress_mode = at.rank != 0 || quiet ? ProgressLine::Mode::off
+                                           : isatty(STDERR_FILENO) ? ProgressLine::Mode::terminal
+                                                                   : ProgressLine::Mode::log;
   const int replicas_here = spread_particles ? scene.run.replicas : own_replicas(scene.run.replicas, at);
-  ProgressLine progress(static_cast<std::uint64_t>(replicas_here) * (scene.run.samples + 1), show_progress);
+  ProgressLine progress(static_cast<std::uint64_t>(replicas_here) * (scene.run.samples + 1), progress_mode);
   RunOptions options;
   options.threads = threads;
   options.on_sample = [&progress] { progress.tick(); };
