@@ -100,9 +100,9 @@ fig-001-3: build
 relaxation-001: table-001-1 table-001-2 fig-001-3
 
 # Paper 001 sec. 5.3: tail exponents (drivers/tails.py, drivers/tail_fit.py). tails-001 runs Examples 7-9 at
-# n = 10^6, N = 10 (half a minute); tails-001-full at the paper's n = 10^7, N = 100 (on 2 cores, 640 MB: Examples 7
-# and 9 8 and 13 min; 8 took 31 min before the changes of 2026-12-02, not rerun); tails-001-full-float the same with
-# 16-byte particles (330 MB: 7, about 22 and 11 min). Measured runs in docs/performance.md.
+# n = 10^6, N = 10 (half a minute); tails-001-full at the paper's n = 10^7, N = 100 (on 2 cores, 640 MB; last
+# measured: Example 7 8 min, 9 13 min, 8 31 min, each before later speed-ups); tails-001-full-float the same with
+# 16-byte particles (330 MB: Examples 7, 8 and 9 in 7, 22 and 8 min). Measured runs in docs/performance.md.
 TAILS = $(PYTHON) drivers/tails.py --granmc $(GRANMC)
 tails-001: build
 	$(TAILS) drivers/scenes/001_tails/example7.toml --particles 1000000 --replicas 10
