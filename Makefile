@@ -101,7 +101,7 @@ relaxation-001: table-001-1 table-001-2 fig-001-3
 
 # Paper 001 sec. 5.3: tail exponents (drivers/tails.py, drivers/tail_fit.py). tails-001 runs Examples 7-9 at
 # n = 10^6, N = 10 (half a minute); tails-001-full at the paper's n = 10^7, N = 100 (on 2 cores, 640 MB; last
-# measured: Example 7 8 min, 9 13 min, 8 31 min, each before later speed-ups); tails-001-full-float the same with
+# measured: Example 7 8 min and 9 13 min, both before later speed-ups, 8 28 min); tails-001-full-float the same with
 # 16-byte particles (330 MB: Examples 7, 8 and 9 in 7, 22 and 8 min). Measured runs in docs/performance.md.
 TAILS = $(PYTHON) drivers/tails.py --granmc $(GRANMC)
 tails-001: build

@@ -36,12 +36,25 @@ struct RunArgs {
   std::string spread = "replicas";
 };
 
-/// Candidates per second per thread on this machine's kind, whole runs on 2 threads, for the time estimate
-/// of --explain (docs/performance.md): time-stepped DSMC, `make hcs-alpha08` (1.45e8 candidates in 2.0 s,
-/// N = 10^5, 2026-12-01: 36 M/s); the event scheme, 001 Example 8 at n = 10^7 (4.72e10 candidates in
-/// 1885 s: 12.5 M/s; Maxwell kernels run about 2.5 times faster, so this is the slow end).
+/// Candidates per second per thread for the time estimate of --explain: whole runs on 2 threads on this
+/// machine (AMD EPYC, 2 cores), set-up included, 2026-12-02 (docs/performance.md). A replica of more than
+/// 100 MB of particles misses the caches at every candidate and runs at about half the rate.
+///  - event scheme, 001 Example 8 (hard spheres): 10^6 particles x 10 replicas in 8.1 s (`make
+///    tails-001`); 10^7 x 100 replicas, 4.72e10 candidates, in 1337 s with float storage and 1681 s with
+///    double (`make tails-001-full-float`, `tails-001-full`). Maxwell's kernel, where every candidate
+///    collides and no majorant is kept, 1.4 times faster (Example 7: 2.00e10 in 433 s and 494 s);
+///  - time-stepped DSMC, cooling state at alpha = 0.8: `make hcs-alpha08` (16 x 10^5 particles, 1.45e8
+///    candidates in 0.93-1.14 s) and the same scene with 2 x 10^7 particles to t = 2 (5.6e8 in 10-12 s).
 double measured_candidates_per_second(const Scene& scene) noexcept {
-  return scene.run.method == Method::event ? 1.25e7 : 3.6e7;
+  double particles = 0.0;
+  for (const SpeciesConfig& s : scene.species) particles += static_cast<double>(s.particles);
+  const bool beyond_caches = particles * static_cast<double>(stored_bytes_per_particle(scene)) > 100e6;
+  if (scene.run.method == Method::event) {
+    const double maxwell = scene.collision.kernel == CollisionKernel::maxwell ? 1.4 : 1.0;
+    if (!beyond_caches) return maxwell * 2.7e7;
+    return maxwell * (scene.run.storage == Storage::single_precision ? 1.77e7 : 1.40e7);
+  }
+  return beyond_caches ? 2.5e7 : 6.6e7;
 }
 
 int explain_command(const Scene& full_scene, const RunArgs& args) {
