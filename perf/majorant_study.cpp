@@ -227,7 +227,8 @@ void time_costs(std::size_t n, double kappa) {
   const double select = fastest_of_5([&] {
     granmc::perf::SplitMix64 gen{11};
     std::uint64_t ring[ahead];
-    auto index = [&] { return granmc::perf::next_pair(gen, n).k; };
+    __extension__ using uint128 = unsigned __int128;
+    auto index = [&] { return static_cast<std::uint64_t>((static_cast<uint128>(gen.next()) * n) >> 64); };
     for (auto& slot : ring) __builtin_prefetch(&bound[slot = index()], 0, 3);
     for (std::size_t d = 0; d < draws; ++d) {
       std::uint64_t& slot = ring[d % ahead];
