@@ -16,10 +16,9 @@
 #include "io/scene_file.hpp"
 #include "io/theory_json.hpp"
 #include "granmc/version.hpp"
-#include "kernel/core/species_store.hpp"
-#include "kernel/schemes/dispatch.hpp"
-#include "kernel/schemes/run_plan.hpp"
 #include "kernel/schemes/spread_dsmc.hpp"
+#include "kernel/setup/explain.hpp"
+#include "kernel/setup/run_plan.hpp"
 
 namespace granmc {
 
@@ -36,92 +35,76 @@ struct RunArgs {
   std::string spread = "replicas";
 };
 
-/// Candidates per second per thread for the time estimate of --explain: whole runs on 2 threads on this
-/// machine (AMD EPYC, 2 cores), set-up included, 2026-12-02 (docs/performance.md). A replica of more than
-/// 100 MB of particles misses the caches at every candidate and runs at about half the rate.
-///  - event scheme, 001 Example 8 (hard spheres): 10^6 particles x 10 replicas in 8.1 s (`make
-///    tails-001`); 10^7 x 100 replicas, 4.72e10 candidates, in 1337 s with float storage and 1681 s with
-///    double (`make tails-001-full-float`, `tails-001-full`). Maxwell's kernel, where every candidate
-///    collides and no majorant is kept, 1.4 times faster (Example 7: 2.00e10 in 433 s and 494 s);
-///  - time-stepped DSMC, cooling state at alpha = 0.8: `make hcs-alpha08` (16 x 10^5 particles, 1.45e8
-///    candidates in 0.93-1.14 s) and the same scene with 2 x 10^7 particles to t = 2 (5.6e8 in 10-12 s).
-double measured_candidates_per_second(const Scene& scene) noexcept {
-  double particles = 0.0;
-  for (const SpeciesConfig& s : scene.species) particles += static_cast<double>(s.particles);
-  const bool beyond_caches = particles * static_cast<double>(stored_bytes_per_particle(scene)) > 100e6;
-  if (scene.run.method == Method::event) {
-    const double maxwell = scene.collision.kernel == CollisionKernel::maxwell ? 1.4 : 1.0;
-    if (!beyond_caches) return maxwell * 2.7e7;
-    return maxwell * (scene.run.storage == Storage::single_precision ? 1.77e7 : 1.40e7);
-  }
-  return beyond_caches ? 2.5e7 : 6.6e7;
-}
-
-int explain_command(const Scene& full_scene, const RunArgs& args) {
+int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs& args) {
   const Place at = place();
   if (at.rank != 0) return exit_ok;
   const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
   Scene rank_share = full_scene;  // over several ranks: rank 0's replicas (the others run as many or one fewer)
   rank_share.run.replicas = own_replicas(full_scene.run.replicas, at);
-  const Scene& scene = at.size > 1 ? rank_share : full_scene;
-  const RunPlan plan = plan_run(scene, threads);
+  const Scene& scene = at.size > 1 && plan.spread == Spread::replicas ? rank_share : full_scene;
+  const PlanExplanation what = explain_plan(plan, scene, threads);
   std::printf("scene        %s\n", args.scene.c_str());
-  std::printf("kernel       %s\n", plan.instantiation.c_str());
-  for (const std::string& e : plan.effects) std::printf("effect       %s\n", e.c_str());
+  std::printf("kernel       %s\n", what.instantiation.c_str());
+  for (const std::string& e : what.effects) std::printf("effect       %s\n", e.c_str());
   std::string absent;
-  for (const std::string& a : plan.absent) absent += (absent.empty() ? "" : ", ") + a;
+  for (const std::string& a : what.absent) absent += (absent.empty() ? "" : ", ") + a;
   if (!absent.empty()) std::printf("not compiled %s (the scene does not name them)\n", absent.c_str());
+  if (plan.spread == Spread::particles) {  // docs/scaling.md, "One system over several ranks"
+    const double n = static_cast<double>(total_particles(full_scene));
+    std::printf("spread       every replica is one system over %d rank(s), the replicas one after another on one "
+                "thread per rank; per rank %.1f MB of particles and at most %.0f MB of candidate list; it takes "
+                "2-3x the time of one process for each replica (docs/scaling.md)\n",
+                at.size, n * static_cast<double>(what.bytes_per_particle) / at.size / 1e6,
+                static_cast<double>(spread_segment * spread_candidate_bytes) / 1e6);
+    return exit_ok;
+  }
   if (at.size > 1)
     std::printf("ranks        %d MPI ranks, replica r on rank r mod %d; rank 0 runs %d of the %d replicas, "
                 "memory and work below are rank 0's\n",
                 at.size, at.size, scene.run.replicas, full_scene.run.replicas);
-  if (args.spread == "particles") {  // docs/scaling.md, "One system over several ranks"
-    const double n = static_cast<double>(full_scene.species[0].particles);
-    std::printf("spread       every replica is one system over %d rank(s), the replicas one after another on one "
-                "thread per rank; per rank %.1f MB of particles and at most %.0f MB of candidate list; it takes "
-                "2-3x the time of one process for each replica (docs/scaling.md)\n",
-                at.size, n * static_cast<double>(stored_bytes_per_particle(full_scene)) / at.size / 1e6,
-                static_cast<double>(spread_segment * spread_candidate_bytes) / 1e6);
+  if (!what.gas) {
+    std::printf("work         about %.3g collision events (one intruder per replica)\n", what.events);
     return exit_ok;
   }
-  if (!scene.intruder)
-    std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
-              static_cast<double>(plan.particle_bytes) / 1e6, plan.replicas_in_flight,
-              stored_bytes_per_particle(scene));
-  if (scene.intruder) {
-    std::printf("work         about %.3g collision events (one intruder per replica)\n", plan.events);
-    return exit_ok;
-  }
-  const double rate = measured_candidates_per_second(scene);
-  const double seconds = plan.candidates / (rate * plan.replicas_in_flight);
+  std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
+              static_cast<double>(what.particle_bytes) / 1e6, what.replicas_in_flight, what.bytes_per_particle);
+  const double seconds = what.candidates / (what.candidates_per_second * what.replicas_in_flight);
   std::printf("work         %s%.3g candidate pairs, about %.0f s on %d threads at %.2g candidates/s per thread\n",
-              plan.candidates_upper_bound ? "at most " : "", plan.candidates, seconds, threads, rate);
+              what.candidates_upper_bound ? "at most " : "", what.candidates, seconds, threads,
+              what.candidates_per_second);
   return exit_ok;
 }
 
-/// Loads and checks a scene; on a bad scene sets `message` and returns nothing.
-std::optional<Scene> load_checked_scene(const std::string& path, std::optional<std::uint64_t> seed,
-                                        std::string& message) {
+/// A scene and the plan that runs it.
+struct CheckedScene {
+  Scene scene;
+  RunPlan plan;
+};
+
+/// Loads a scene and makes its plan; on a bad scene, or one granmc cannot run as asked, sets `message` and
+/// returns nothing.
+std::optional<CheckedScene> load_checked_scene(const std::string& path, std::optional<std::uint64_t> seed,
+                                               Spread spread, std::string& message) {
   try {
     Scene scene = load_scene(path);
     if (seed) scene.run.seed = *seed;
-    if (const std::string why = unsupported_reason(scene); !why.empty()) {
-      message = "granmc: " + path + ": " + why + "\n";
-      return std::nullopt;
-    }
-    return scene;
+    RunPlan plan = make_plan(scene, spread);
+    return CheckedScene{std::move(scene), std::move(plan)};
   } catch (const SceneError& e) {
     message = std::string("granmc: ") + e.what() + "\n";
-    return std::nullopt;
+  } catch (const PlanRefusal& e) {
+    message = "granmc: " + path + ": " + e.what() + "\n";
   }
+  return std::nullopt;
 }
 
-/// Loads and checks a scene; on a bad scene prints one message and returns nothing. With MPI every rank
-/// reads the scene and all go on only if all could (all_ranks_ok): a rank that stopped here would leave
+/// Loads a scene and makes its plan; on a bad scene prints one message and returns nothing. With MPI every
+/// rank reads the scene and all go on only if all could (all_ranks_ok): a rank that stopped here would leave
 /// the others waiting in the gather.
-std::optional<Scene> checked_scene(const std::string& path, std::optional<std::uint64_t> seed) {
+std::optional<CheckedScene> checked_scene(const std::string& path, std::optional<std::uint64_t> seed,
+                                          Spread spread = Spread::replicas) {
   std::string message;
-  std::optional<Scene> scene = load_checked_scene(path, seed, message);
+  std::optional<CheckedScene> scene = load_checked_scene(path, seed, spread, message);
   if (!all_ranks_ok(scene.has_value(), message)) return std::nullopt;
   return scene;
 }
@@ -131,20 +114,16 @@ std::string default_output(const std::string& scene_path) {
 }
 
 int run_command(const RunArgs& args) {
-  const std::optional<Scene> loaded = checked_scene(args.scene, args.seed);
+  const std::optional<CheckedScene> loaded =
+      checked_scene(args.scene, args.seed, args.spread == "particles" ? Spread::particles : Spread::replicas);
   if (!loaded) return exit_bad_input;
-  const Scene& scene = *loaded;
-  const bool spread_particles = args.spread == "particles";
-  if (spread_particles) {
-    const std::string why = unsupported_spread_reason(scene);
-    if (!all_ranks_ok(why.empty(), args.scene + ": " + why + "\n")) return exit_bad_input;
-  }
-  if (args.explain) return explain_command(scene, args);
+  const Scene& scene = loaded->scene;
+  if (args.explain) return explain_command(scene, loaded->plan, args);
   const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
 
   const Place at = place();
   try {
-    const JobResult done = run_job(scene, {out, args.summary}, args.threads, args.quiet, spread_particles);
+    const JobResult done = run_job(scene, loaded->plan, {out, args.summary}, args.threads, args.quiet);
     if (at.rank != 0) return exit_ok;  // rank 0 alone reports
     if (!args.quiet && at.size == 1) {
       std::printf("granmc %s: %s, %d replicas, %.1f s on %d threads -> %s%s%s\n", version, args.scene.c_str(),
@@ -162,10 +141,10 @@ int run_command(const RunArgs& args) {
 }
 
 int theory_command(const std::string& path) {
-  const std::optional<Scene> scene = checked_scene(path, std::nullopt);
-  if (!scene) return exit_bad_input;
+  const std::optional<CheckedScene> checked = checked_scene(path, std::nullopt);
+  if (!checked) return exit_bad_input;
   if (place().rank != 0) return exit_ok;
-  std::cout << scene_theory_json(*scene).dump(2) << "\n";
+  std::cout << scene_theory_json(checked->scene).dump(2) << "\n";
   return exit_ok;
 }
 

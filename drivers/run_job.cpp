@@ -11,7 +11,7 @@
 #include "io/hdf5_output.hpp"
 #include "io/run_report.hpp"
 #include "io/summary_json.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/run_options.hpp"
 #ifdef GRANMC_HAVE_MPI
 #include "drivers/mpi_replicas.hpp"
@@ -65,7 +65,8 @@ bool rank0_value(bool value) {
 #endif
 }
 
-JobResult run_job(const Scene& scene, const JobOutputs& outputs, int threads, bool quiet, bool spread_particles) {
+JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet) {
+  const bool spread_particles = plan.spread == Spread::particles;
   const Place at = place();
   const ProgressLine::Mode progress_mode = at.rank != 0 || quiet ? ProgressLine::Mode::off
                                            : isatty(STDERR_FILENO) ? ProgressLine::Mode::terminal
@@ -86,7 +87,7 @@ JobResult run_job(const Scene& scene, const JobOutputs& outputs, int threads, bo
 
   const auto start = std::chrono::steady_clock::now();
   // Spread over the ranks, every rank holds every replica's series; otherwise rank 0 gathers them.
-  RunResult result = spread_particles ? run_scene(scene, options) : completed(run_scene(scene, options));
+  RunResult result = spread_particles ? run_plan(plan, scene, options) : completed(run_plan(plan, scene, options));
   result.ranks = at.size;
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

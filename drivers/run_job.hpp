@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kernel/core/scene.hpp"
+#include "kernel/setup/run_plan.hpp"
 
 namespace granmc {
 
@@ -40,13 +41,13 @@ struct JobResult {
   int threads = 0;            // this rank's OpenMP threads
 };
 
-/// Runs `scene` (checked: unsupported_reason is empty) with this rank's replicas on `threads` threads (0: the
+/// Runs `plan`, made from `scene`, with this rank's replicas on `threads` threads (0: the
 /// OpenMP default), gathers them to rank 0, and there writes `outputs` (creating their directories). The
 /// progress line shows on rank 0 when stderr is a terminal, unless `quiet`. Collective under MPI. Throws
 /// std::exception on failure; report it with run_failure.
-/// With `spread_particles` (checked: unsupported_spread_reason is empty), every replica is one system over
-/// all ranks instead (schemes/spread_dsmc.hpp), the replicas one after another on one thread per rank.
-JobResult run_job(const Scene& scene, const JobOutputs& outputs, int threads, bool quiet, bool spread_particles = false);
+/// With plan.spread = Spread::particles, every replica is one system over all ranks instead
+/// (schemes/spread_dsmc.hpp), the replicas one after another on one thread per rank.
+JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet);
 
 /// A failure during a run: one message and exit status 1. Over several MPI ranks the message names the rank
 /// and every rank is ended (MPI_Abort), so that none waits for it.

@@ -20,7 +20,7 @@
 #include "io/summary_json.hpp"
 #include "io/sweep_file.hpp"
 #include "granmc/version.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_plan.hpp"
 #ifdef GRANMC_HAVE_MPI
 #include "drivers/mpi_replicas.hpp"
 #endif
@@ -51,7 +51,7 @@ std::optional<Sweep> load_checked_sweep(const std::string& path, std::string& me
   try {
     Sweep sweep = load_sweep(path);
     for (const SweepScene& s : sweep.scenes) {
-      if (const std::string why = unsupported_reason(s.scene); !why.empty()) {
+      if (const std::string why = plan_refusal(s.scene); !why.empty()) {
         message = "granmc: " + path + ": " + s.scene.source_path + ": " + why + "\n";
         return std::nullopt;
       }
@@ -101,7 +101,7 @@ std::string summary_name(const SweepScene& s) { return s.name + ".json"; }
 
 /// Runs one scene of the sweep as `granmc run` would, writing its two files into `dir`.
 void run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& args) {
-  run_job(s.scene, {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads, args.quiet);
+  run_job(s.scene, make_plan(s.scene), {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads, args.quiet);
 }
 
 nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, const std::vector<std::string>& hashes,

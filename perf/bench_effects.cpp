@@ -74,7 +74,8 @@
 #include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/effects/white_noise.hpp"
 #include "kernel/schemes/collision_stage.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/explain.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/dsmc.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
@@ -204,7 +205,7 @@ class DsmcGas final : public Gas {
   /// make_effects(scene) gives the effects as a tuple; they may keep a pointer to the gas's own scene.
   template <class MakeEffects>
   DsmcGas(Scene scene, MakeEffects make_effects) : scene_(std::move(scene)), pairs_(pair_coefficients(scene_)) {
-    if (const std::string why = unsupported_reason(scene_); !why.empty()) {
+    if (const std::string why = plan_refusal(scene_); !why.empty()) {
       std::fprintf(stderr, "bench_effects: a benchmark scene is not supported: %s\n", why.c_str());
       std::abort();
     }
@@ -280,20 +281,20 @@ const std::vector<SceneBench>& scene_benches() {
       {"white_noise", white_noise_scene,
        [] {
          return std::make_unique<DsmcGas<HardSphere, WhiteNoise>>(white_noise_scene(), [](const Scene& s) {
-           return std::tuple{WhiteNoise{s.thermostat.beta, &s}};
+           return std::tuple{WhiteNoise{s.thermostat.beta, species_masses(s)}};
          });
        }},
       {"shear", shear_scene,
        [] {
          return std::make_unique<DsmcGas<HardSphere, LagrangianShear>>(shear_scene(), [](const Scene& s) {
-           return std::tuple{LagrangianShear{s.shear_rate, &s}};
+           return std::tuple{LagrangianShear{s.shear_rate, species_masses(s)}};
          });
        }},
       {"enskog_shear", enskog_shear_scene,
        [] {
          return std::make_unique<DsmcGas<HardSphere, LagrangianShear, EnskogShearShift>>(
              enskog_shear_scene(),
-             [](const Scene& s) { return std::tuple{LagrangianShear{s.shear_rate, &s}, EnskogShearShift{s.shear_rate}}; });
+             [](const Scene& s) { return std::tuple{LagrangianShear{s.shear_rate, species_masses(s)}, EnskogShearShift{s.shear_rate}}; });
        }},
       {"relaxation", relaxation_scene,
        [] {
@@ -339,7 +340,7 @@ void white_noise_apply(benchmark::State& bs) {
   static const Scene scene = white_noise_scene();
   static const RandomStream rng(kSeed, 1);
   static GasState state = maxwellian_state(scene, rng);
-  const WhiteNoise effect{scene.thermostat.beta, &scene};
+  const WhiteNoise effect{scene.thermostat.beta, species_masses(scene)};
   // dt of a plain step at T = 1: N/10 candidates at omega_max ~ 4 pi (2 max |c|) ~ 4 pi 11
   const double dt = 2.0 * kCandidateFraction / (4.0 * std::numbers::pi * 11.0);
   double change = 0.0;
@@ -505,7 +506,7 @@ void print_table(const perf::RecordingReporter& rep) {
     const double t = v(b.name, "time/cand");
     if (std::isnan(t)) continue;
     const double per_step = x(b.name, "cand/step"), acc = x(b.name, "acceptance");
-    const std::string inst = b.scene ? instantiation_name(b.scene()) : std::string("perf/hand_specialised_hcs.hpp");
+    const std::string inst = b.scene ? instantiation_name(make_plan(b.scene()), b.scene()) : std::string("perf/hand_specialised_hcs.hpp");
     std::printf("| %s | %s | %.1f | %.3f | %.0f | %.4f | %.0f | %.1f | %+.2f |\n", b.name, inst.c_str(), t, t / plain,
                 per_step, acc, t / acc, x(b.name, "rescales/kstep"), (t - plain) * per_step / n);
   }

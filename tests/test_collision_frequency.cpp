@@ -11,7 +11,7 @@
 
 #include "kernel/collide/enskog_chi.hpp"
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 
 using namespace granmc;
 

@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/scene_theory.hpp"
 
 using namespace granmc;

@@ -18,7 +18,7 @@
 #include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/observe/moments.hpp"
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/event_white_noise.hpp"
 #include "kernel/schemes/initial_state.hpp"
 #include "kernel/theory/white_noise.hpp"

@@ -15,7 +15,7 @@
 #include "kernel/collide/bath_gaussian.hpp"
 #include "kernel/collide/bath_power_law.hpp"
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "tests/intruder_averages.hpp"
 #include "kernel/schemes/intruder_dsmc_1d.hpp"
 #include "kernel/theory/intruder.hpp"

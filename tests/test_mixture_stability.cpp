@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 
 using namespace granmc;
 

@@ -13,7 +13,7 @@
 #include "io/run_report.hpp"
 #include "kernel/collide/needle_flux.hpp"
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/intruder_needle.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 
@@ -409,7 +409,7 @@ TEST(Needle, SceneRunReportsTheStationaryAverages) {
   // Through the one dispatch site and the run report, as `granmc run` does: intruder.temperature_ratio
   // is T_tr/T_B, and R and T_rot/T_B are the averages computed here from the recorded velocities.
   Scene s = needle_scene(0.5, 0.3, 2000.0, 4);
-  ASSERT_TRUE(unsupported_reason(s).empty()) << unsupported_reason(s);
+  ASSERT_TRUE(plan_refusal(s).empty()) << plan_refusal(s);
   const RunResult run = run_scene(s, {});
   const RunReport report = make_run_report(s, run, 0.0);
   ASSERT_TRUE(report.intruder && report.intruder->needle);
@@ -432,6 +432,6 @@ TEST(Needle, FloatStorageIsRefusedForAnIntruderScene) {
   // run.storage is a gas-store option; an intruder scene has no store, so the key must not pass silently.
   Scene s = needle_scene(0.5, 0.3, 10.0, 1);
   s.run.storage = Storage::single_precision;
-  EXPECT_NE(unsupported_reason(s).find("run.storage = \"float\" for an intruder scene"), std::string::npos)
-      << unsupported_reason(s);
+  EXPECT_NE(plan_refusal(s).find("run.storage = \"float\" for an intruder scene"), std::string::npos)
+      << plan_refusal(s);
 }

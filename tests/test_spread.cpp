@@ -11,7 +11,7 @@
 
 #include "kernel/core/ranks.hpp"
 #include "kernel/collide/hard_sphere.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/spread_dsmc.hpp"
 
 using namespace granmc;
@@ -34,7 +34,7 @@ Scene cooling(ThermostatKind thermostat) {
 
 /// `one` receives the one-process run.
 void expect_same_chain(const Scene& s, RunResult& one) {
-  ASSERT_TRUE(unsupported_spread_reason(s).empty()) << unsupported_spread_reason(s);
+  ASSERT_TRUE(plan_refusal(s, Spread::particles).empty()) << plan_refusal(s, Spread::particles);
   one = run_scene(s, {});
   const SingleRank single;
   RunOptions spread;
@@ -83,10 +83,10 @@ TEST(SpreadSystem, WhiteNoiseMakesTheCollisionsOfTheOneProcessStage) {  // the k
 TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
   Scene s = cooling(ThermostatKind::none);
   s.run.storage = Storage::single_precision;
-  EXPECT_NE(unsupported_spread_reason(s).find("float"), std::string::npos);
+  EXPECT_NE(plan_refusal(s, Spread::particles).find("float"), std::string::npos);
   Scene two = cooling(ThermostatKind::none);
   two.species.push_back({"b", 1.0, 1.0, 1.0, 10000});
-  EXPECT_NE(unsupported_spread_reason(two).find("two species"), std::string::npos);
+  EXPECT_NE(plan_refusal(two, Spread::particles).find("two species"), std::string::npos);
   const SingleRank single;
   RunOptions spread;
   spread.spread = &single;

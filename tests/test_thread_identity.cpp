@@ -5,7 +5,7 @@
 #include <cstring>
 #include <string>
 
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 
 using namespace granmc;
 

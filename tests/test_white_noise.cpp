@@ -16,7 +16,7 @@
 #include <numbers>
 
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/schemes/dispatch.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/white_noise.hpp"
 
 using namespace granmc;

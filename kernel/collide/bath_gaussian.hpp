@@ -21,6 +21,8 @@
 namespace granmc {
 
 struct GaussianBath {
+  static constexpr const char* name = "gaussian-bath";
+  static constexpr const char* explanation = "Gaussian bath (002 eq. 18)";
   double a = 1.0;    // 1 / (2 T_B), velocity^-2
   double rho = 1.0;  // number density of the bath
 

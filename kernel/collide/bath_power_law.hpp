@@ -24,6 +24,8 @@
 namespace granmc {
 
 struct PowerLawBath {
+  static constexpr const char* name = "power-law-bath";
+  static constexpr const char* explanation = "power-law bath (002 eq. 23)";
   double a = 1.0;    // 1 / T_B, velocity^-2
   double rho = 1.0;  // number density of the bath
 

@@ -13,6 +13,8 @@
 //
 // In the Boltzmann limit (packing_fraction = 0) the shift vanishes with sigma_ij a / v_0 ~ a* phi, and
 // the collision stage runs with NoCollisionShift: dilute runs and runs without shear pay nothing.
+#include <string>
+
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/sym_tensor.hpp"
 #include "kernel/core/vec3.hpp"
@@ -29,9 +31,13 @@ struct NoCollisionShift {
 struct EnskogShearShift {
   static constexpr bool active = true;
   static constexpr StepPhase phase = StepPhase::in_collision;
-  static constexpr const char* name = "Enskog shear shift";
+  static constexpr const char* name = "enskog-shear-shift";
 
   double rate = 0.0;  // a (1 / time)
+
+  [[nodiscard]] std::string explanation() const {
+    return "Enskog shear shift of the contact velocity, collisional transfer P^c tallied";
+  }
 
   /// The step's shift per unit diameter in stored units, a / u, for a velocity scale u.
   [[nodiscard]] EnskogShearShift in_stored_units(double u) const noexcept { return {rate / u}; }

@@ -20,6 +20,8 @@ namespace granmc {
 struct HardSphere {
   static constexpr double lambda = 1.0;
   static constexpr const char* name = "hard-sphere";
+  static constexpr const char* explanation =
+      "hard spheres: omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3)";
   template <class Scene>
   static constexpr HardSphere from_scene(const Scene&) noexcept { return {}; }
   /// Rate factor for normal relative speed g_sigma = g.sigma-hat > 0.

@@ -13,6 +13,8 @@ namespace granmc {
 struct MaxwellPseudomolecules {
   static constexpr double lambda = 0.0;
   static constexpr const char* name = "maxwell";
+  static constexpr const char* explanation =
+      "Maxwell pseudomolecules in the impact-direction form (16 pi rate (g.sigma)/|g|)";
   template <class Scene>
   static constexpr MaxwellPseudomolecules from_scene(const Scene&) noexcept { return {}; }
   static double rate(double g_sigma, double g2) noexcept { return g_sigma / std::sqrt(g2); }

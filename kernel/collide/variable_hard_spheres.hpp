@@ -13,6 +13,8 @@ namespace granmc {
 
 struct VariableHardSpheres {
   static constexpr const char* name = "vhs";
+  static constexpr const char* explanation =
+      "variable hard spheres in the impact-direction form (16 pi rate (g.sigma) |g|^(lambda - 1))";
   double lambda = 0.5;
 
   static VariableHardSpheres from_scene(const Scene& scene) noexcept { return {scene.collision.lambda}; }

@@ -115,6 +115,13 @@ inline std::int64_t total_particles(const Scene& s) {
   return n;
 }
 
+/// The species' masses m_i, in scene order.
+inline std::vector<double> species_masses(const Scene& s) {
+  std::vector<double> masses;
+  for (const auto& sp : s.species) masses.push_back(sp.mass);
+  return masses;
+}
+
 /// Total number density n = sum_i n_i.
 inline double total_density(const Scene& s) {
   double n = 0.0;

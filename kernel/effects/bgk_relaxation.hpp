@@ -15,6 +15,7 @@
 // block index; the stream order is fixed, so the result does not depend on threads.
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
@@ -25,9 +26,14 @@ namespace granmc {
 
 struct BgkRelaxation {
   static constexpr StepPhase phase = StepPhase::after_collisions;
+  static constexpr const char* name = "bgk-relaxation";
 
   SonineMaxwellian f0{0.0};  // f^(0) in reduced velocity V / v0, a2 of the scene's alpha
   double mass = 1.0;
+
+  [[nodiscard]] std::string explanation() const {
+    return "BGK-like relaxation to the first-Sonine HCS f^(0) (003), O(replaced) per step";
+  }
 
   /// Returns the change of sum_k m |c_k|^2 (stored units).
   template <class State>

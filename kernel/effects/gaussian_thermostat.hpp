@@ -8,6 +8,7 @@
 // before and after the collision stage (000 sec. 3): zeta dt = ln(T_before / T_after), so the temperature
 // is restored exactly at the end of every step (HSS; with shear, 000 eq. 10 still holds).
 #include <cmath>
+#include <string>
 
 #include "kernel/effects/step_context.hpp"
 
@@ -15,9 +16,15 @@ namespace granmc {
 
 struct GaussianThermostat {
   static constexpr StepPhase phase = StepPhase::after_collisions;
+  static constexpr const char* name = "gaussian-thermostat";
 
   bool compensate_cooling = true;  // zeta = instantaneous cooling rate
   double zeta = 0.0;               // fixed rate (1 / time) when not compensating
+
+  [[nodiscard]] std::string explanation() const {
+    return compensate_cooling ? "Gaussian thermostat compensating the cooling rate (O(1) per step)"
+                              : "Gaussian thermostat, fixed zeta (O(1) per step)";
+  }
 
   /// Moves only the velocity scale: the stored energy is unchanged (returns 0).
   template <class State>

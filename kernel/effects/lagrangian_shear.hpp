@@ -6,7 +6,9 @@
 // and it commutes with the Gaussian thermostat's scaling.
 // Dilute (Boltzmann) shear needs only this effect; the Enskog shift of the relative velocity at contact
 // lives in collide/enskog_shear_shift.hpp.
-#include "kernel/core/scene.hpp"
+#include <string>
+#include <vector>
+
 #include "kernel/effects/step_context.hpp"
 #include "kernel/observe/compensated_sum.hpp"
 
@@ -17,9 +19,15 @@ struct LagrangianShear {
   // stationary shear stress is low by nu_eta dt / 2 (docs/physics.md: 1.1 % at dt = 0.03 mean free times).
   // The step fuses each second half with the next first half: one pass per step.
   static constexpr StepPhase phase = StepPhase::around_collisions;
+  static constexpr const char* name = "lagrangian-shear";
 
-  double rate = 0.0;             // a (1 / time)
-  const Scene* scene = nullptr;  // species masses
+  double rate = 0.0;            // a (1 / time)
+  std::vector<double> masses;   // m_i of the species, in scene order
+
+  [[nodiscard]] std::string explanation() const {
+    return "uniform shear flow: inertial force V_x -= a V_y dt in free flight (O(N) per step), pressure tensor "
+           "P^k at each sample";
+  }
 
   /// Returns the change of sum_i m_i sum_k |c_k|^2 (stored units): the viscous heating of the kinetic
   /// part, -2 a dt sum m c_x c_y + (a dt)^2 sum m c_y^2.
@@ -28,7 +36,7 @@ struct LagrangianShear {
     const double a_dt = rate * step.dt;
     CompensatedSum change;
     for (std::size_t i = 0; i < state.species.size(); ++i) {
-      const double mass = scene->species[i].mass;
+      const double mass = masses[i];
       double species_change = 0.0;
       state.species[i].for_each_velocity([&](Vec3& c) {
         const double x = c.x - a_dt * c.y;  // 000 sec. 3: V_x -> V_x - a V_y dt

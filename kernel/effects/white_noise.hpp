@@ -8,10 +8,11 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
-#include "kernel/core/scene.hpp"
 #include "kernel/effects/step_context.hpp"
 #include "kernel/observe/compensated_sum.hpp"
 
@@ -19,9 +20,14 @@ namespace granmc {
 
 struct WhiteNoise {
   static constexpr StepPhase phase = StepPhase::after_collisions;
+  static constexpr const char* name = "white-noise";
 
   double beta = 0.0;            // velocity diffusion coefficient (velocity^2 / time)
-  const Scene* scene = nullptr; // species masses
+  std::vector<double> masses;   // m_i of the species, in scene order
+
+  [[nodiscard]] std::string explanation() const {
+    return "white noise after each collision stage (splitting, O(N) per step)";
+  }
 
   static constexpr std::size_t batch = 64;  // particles whose normals are computed together
 
@@ -41,7 +47,7 @@ struct WhiteNoise {
   void kick(Store& store, std::size_t from, std::size_t to, std::uint64_t offset, std::uint16_t i, const State& state,
             const StepContext& step, CompensatedSum& change) const noexcept {
     const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
-    const double mass = scene->species[i].mass;
+    const double mass = masses[i];
     for_each_particle_normal<batch>(*step.rng, RngPurpose::white_noise_kick, i, state.step, offset + from, to - from,
                                     [&](std::size_t k, const Vec3& xi) {
                                       const Vec3 c = store.velocity(from + k);

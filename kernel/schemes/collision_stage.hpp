@@ -300,7 +300,7 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
         const PairCoefficients& p = one_pair ? only_pair : pairs[q];
         if constexpr (!one_pair) threshold[b] = d.accept[b] * majorant[q];
         if constexpr (Shift::active) {
-          static_assert(std::is_same_v<Kernel, HardSphere>, "the Enskog shift runs with hard spheres (schemes/dispatch.cpp)");
+          static_assert(std::is_same_v<Kernel, HardSphere>, "the Enskog shift runs with hard spheres (setup/run_plan.hpp)");
           const Vec3 sigma{d.sx[b], d.sy[b], d.sz[b]};
           const Vec3 g = shift.relative_velocity(d.pk[b].velocity(), d.pl[b].velocity(), sigma, p);
           const double terms = std::abs(g.x * sigma.x) + std::abs(g.y * sigma.y) + std::abs(g.z * sigma.z);

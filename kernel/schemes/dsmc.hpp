@@ -8,7 +8,7 @@
 // (settled before every observation). `Kernel` is the collision-rate evaluator
 // (collide/), `Effects` the evaluator structs of effects/ (effects/step_context.hpp says what they
 // look like); an effect the scene does not name is not in the pack and costs nothing. One file,
-// schemes/dispatch.cpp, chooses the instantiation.
+// setup/run_plan.cpp, chooses the instantiation.
 //
 // Long cooling runs never underflow: the stored velocities are rescaled to unit temperature (and the
 // centre-of-mass velocity removed) whenever the stored energy has drifted by a factor

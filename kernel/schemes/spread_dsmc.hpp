@@ -160,7 +160,7 @@ class SpreadDsmc {
   /// The white-noise kick of the step on this rank's particles (effects/white_noise.hpp, the same normals
   /// per global particle index); its energy change summed per chunk, then over the chunks in order.
   double white_noise(const StepContext& step) {
-    const WhiteNoise noise{scene_.thermostat.beta, &scene_};
+    const WhiteNoise noise{scene_.thermostat.beta, {scene_.species[0].mass}};
     std::vector<double> parts(chunks_, 0.0);
     for (std::size_t c = first_chunk_; c * chunk < hi_; ++c) {
       CompensatedSum change;

@@ -1,0 +1,243 @@
+#include "kernel/setup/explain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <tuple>
+
+#include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/core/species_store.hpp"
+#include "kernel/theory/intruder.hpp"
+#include "kernel/theory/scene_theory.hpp"
+#include "kernel/theory/white_noise.hpp"
+
+namespace granmc {
+
+namespace {
+
+template <class... Effects, class F>
+void for_each_effect(const EffectList<Effects...>& list, F&& f) {
+  std::apply([&](const auto&... effect) { (f(effect), ...); }, list.effects);
+}
+
+/// The speed x (in units of the one-component thermal width) that one of N Maxwellian particles exceeds
+/// on average: P(|c| > x) = erfc(x / sqrt 2) + sqrt(2 / pi) x exp(-x^2 / 2) = 1 / N. Sets the initial majorant.
+double expected_max_speed(double particles) {
+  double lo = 0.0, hi = 40.0;
+  for (int it = 0; it < 200; ++it) {
+    const double x = 0.5 * (lo + hi);
+    const double tail = std::erfc(x / std::sqrt(2.0)) + std::sqrt(2.0 / std::numbers::pi) * x * std::exp(-0.5 * x * x);
+    (tail > 1.0 / particles ? lo : hi) = x;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/// Candidates per second per thread for the time estimate: whole runs on 2 threads on the reference machine
+/// of docs/performance.md (2 cores), set-up included. A replica of more than 100 MB of particles misses the
+/// caches at every candidate and runs at about half the rate.
+///  - event scheme, 001 Example 8 (hard spheres): 10^6 particles x 10 replicas in 8.1 s (`make tails-001`);
+///    10^7 x 100 replicas, 4.72e10 candidates, in 1337 s with float storage and 1681 s with double (`make
+///    tails-001-full-float`, `tails-001-full`). Maxwell's kernel, where every candidate collides and no
+///    majorant is kept, 1.4 times faster (Example 7: 2.00e10 in 433 s and 494 s);
+///  - time-stepped DSMC, cooling state at alpha = 0.8: `make hcs-alpha08` (16 x 10^5 particles, 1.45e8
+///    candidates in 0.93-1.14 s) and the same scene with 2 x 10^7 particles to t = 2 (5.6e8 in 10-12 s).
+double event_candidates_per_second(const EventPlan& plan, bool beyond_caches) {
+  const double maxwell = std::holds_alternative<MaxwellKernel>(plan.kernel) ? 1.4 : 1.0;
+  if (!beyond_caches) return maxwell * 2.7e7;
+  return maxwell * (std::holds_alternative<StoredAs<float>>(plan.storage) ? 1.77e7 : 1.40e7);
+}
+double stepped_candidates_per_second(bool beyond_caches) { return beyond_caches ? 2.5e7 : 6.6e7; }
+
+void explain_gas_memory(const Scene& scene, PlanExplanation& out) {
+  out.bytes_per_particle = stored_bytes_per_particle(scene);
+  out.particle_bytes = static_cast<std::uint64_t>(total_particles(scene)) * out.bytes_per_particle *
+                       static_cast<std::uint64_t>(out.replicas_in_flight);
+}
+
+bool beyond_caches(const Scene& scene) {
+  return static_cast<double>(total_particles(scene)) * static_cast<double>(stored_bytes_per_particle(scene)) > 100e6;
+}
+
+/// The time-step-free scheme (001 sec. 4): candidates at pi_hat = 2 pi rate (n - 1) U_max^lambda, U_max
+/// estimated as 2 x the expected largest speed at the larger of T(0) and the steady temperature.
+void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
+  const CollisionConfig& c = scene.collision;
+  char kernel[96];
+  std::snprintf(kernel, sizeof kernel, "one species, kernel rate |u|^lambda with lambda = %g, e uniform (001 eqs. 4, 8)",
+                c.lambda);
+  out.effects.push_back(kernel);
+  if (plan.white_noise)
+    out.effects.push_back("white noise by lazy Brownian updates at collision and sample times (001 eq. 23)");
+  else
+    out.absent.push_back("white noise");
+  out.effects.push_back(std::holds_alternative<MaxwellKernel>(plan.kernel)
+                            ? "every candidate collides (Maxwell kernel: no majorant)"
+                            : "constant majorant U_max, raised at candidates, reset at samples");
+  explain_gas_memory(scene, out);
+  const double n = static_cast<double>(scene.species[0].particles);
+  double temperature = scene.initial_temperature;
+  if (plan.white_noise)
+    temperature = std::max(temperature, theory::white_noise_steady_temperature(c.lambda, c.rate, c.restitution[0][0],
+                                                                               scene.thermostat.beta, 0.0));
+  const double majorant = 2.0 * expected_max_speed(n) * std::sqrt(temperature);
+  out.candidates = scene.run.replicas * scene.run.t_end * 2.0 * std::numbers::pi * c.rate * (n - 1.0) *
+                   std::pow(majorant, c.lambda);
+  out.candidates_upper_bound = false;
+  out.candidates_per_second = event_candidates_per_second(plan, beyond_caches(scene));
+}
+
+/// The time-stepped scheme: candidates, summed over pairs, 1/2 N_i omega_max^(ij) int u dt, omega_max from the
+/// expected largest initial speeds (stored units, unit temperature), int u dt from Haff's law when it
+/// applies, else u(0) t_end (exact with the compensating thermostat, an upper bound for a cooling mixture).
+void explain(const SteppedPlan& plan, const Scene& scene, PlanExplanation& out) {
+  out.effects.push_back(scene.species.size() == 1
+                            ? "one species"
+                            : "two species: 4 ordered pairs, candidates interleaved within each step");
+  std::visit([&](const auto& kernel) { out.effects.push_back(kernel.explanation); }, plan.kernel);
+  if (scene.collision.packing_fraction > 0.0)
+    out.effects.push_back("Enskog chi_ij (Carnahan-Starling), folded into the pair rates");
+  const auto add = [&](const auto& effect) { out.effects.push_back(effect.explanation()); };
+  bool sheared = false, shift = false, thermostat = false, relaxation = false;
+  std::visit(
+      [&](const auto& list) {
+        for_each_effect(list, add);
+        sheared = !list.empty;
+        shift = list.template has<EnskogShearShift>;
+      },
+      plan.shear);
+  if (sheared && !shift) out.effects.push_back("no shift of the contact velocity (Boltzmann limit, P^c = 0)");
+  std::visit(
+      [&](const auto& list) {
+        for_each_effect(list, add);
+        thermostat = !list.empty;
+        relaxation = list.template has<BgkRelaxation>;
+      },
+      plan.thermostat);
+  if (!thermostat) out.absent.push_back("thermostat");
+  if (!sheared) out.absent.push_back("shear");
+  if (!relaxation) out.absent.push_back("relaxation term");
+  if (scene.collision.packing_fraction == 0.0) out.absent.push_back("Enskog chi");
+  if (scene.run.dt_scaling == DtScaling::thermal)
+    out.effects.push_back(scene.shear_rate != 0.0 ? "time step following the thermal speed, capped at run.dt"
+                                                  : "time step following the thermal speed");
+  explain_gas_memory(scene, out);
+
+  double u_time = scene.run.t_end;  // int_0^t_end u(t)/u(0) dt
+  out.candidates_upper_bound = scene.thermostat.kind != ThermostatKind::gaussian;
+  if (const auto hcs = theory::cooling_state(scene, {})) {
+    u_time = 2.0 / hcs->cooling_rate0 * std::log1p(0.5 * hcs->cooling_rate0 * scene.run.t_end);
+    out.candidates_upper_bound = false;
+  }
+  const double u0 = std::sqrt(scene.initial_temperature);
+  // The majorant bounds the mean of omega_kl over sigma-hat, a quarter of omega_kl's bound, except with the
+  // Enskog shear shift (schemes/collision_stage.hpp, majorant_bound).
+  const double mean_form = shift ? 1.0 : 0.25;
+  for (const PairCoefficients& p : pair_coefficients(scene)) {
+    const SpeciesConfig& a = scene.species[p.i];
+    const SpeciesConfig& b = scene.species[p.j];
+    const double max_a = expected_max_speed(static_cast<double>(a.particles)) / std::sqrt(a.mass);
+    const double max_b = expected_max_speed(static_cast<double>(b.particles)) / std::sqrt(b.mass);
+    const double half_n = 0.5 * static_cast<double>(a.particles);
+    out.candidates += std::visit(
+        [&](const auto& kernel) {
+          using K = std::decay_t<decltype(kernel)>;
+          if constexpr (std::is_same_v<K, MaxwellPseudomolecules>)  // omega_max = prefactor, whatever T
+            return half_n * p.rate_prefactor * scene.run.t_end;
+          else if constexpr (std::is_same_v<K, VariableHardSpheres>)  // omega_max = prefactor U^lambda, T at T(0)
+            return half_n * p.rate_prefactor * std::pow((max_a + max_b) * u0, kernel.lambda) * scene.run.t_end;
+          else
+            return half_n * p.rate_prefactor * (max_a + max_b) * u0 * u_time;
+        },
+        plan.kernel);
+  }
+  out.candidates *= mean_form * static_cast<double>(scene.run.replicas);
+  out.candidates_per_second = stepped_candidates_per_second(beyond_caches(scene));
+}
+
+/// An intruder: one per replica; the work is its collision events, at the mean rate rho <|v1 - v|> with both
+/// Maxwellian at T_B, rho sqrt(2 T_B (1 + 1/M) / pi), times the length for the needle (per unit length,
+/// ignoring the rotation: an estimate).
+void explain_intruder(const std::string& bath, const Scene& scene, PlanExplanation& out) {
+  const IntruderConfig& in = *scene.intruder;
+  out.gas = false;
+  out.effects.push_back(bath);
+  const double tb = theory::bath_temperature(in);
+  out.events = scene.run.replicas * scene.run.t_end * in.bath_density * (in.dimension == 2 ? in.length : 1.0) *
+               std::sqrt(2.0 * tb * (1.0 + 1.0 / in.mass) / std::numbers::pi);
+}
+
+void explain(const IntruderLinePlan& plan, const Scene& scene, PlanExplanation& out) {
+  explain_intruder(std::visit([](const auto& bath) { return bath.explanation; }, plan.bath), scene, out);
+  out.effects.push_back("colliding bath velocities sampled exactly (no window)");
+}
+
+void explain(const NeedlePlan& plan, const Scene& scene, PlanExplanation& out) {
+  explain_intruder(plan.bath.explanation, scene, out);
+  out.effects.push_back("colliding bath velocities sampled exactly (no window)");
+  out.effects.push_back("needle of length L: event times from the integrated flux by Newton with a bisection "
+                        "fallback (002 eqs. 27-28), impact point sampled exactly (002 eq. 29)");
+}
+
+void explain(const IntruderDsmcPlan& plan, const Scene& scene, PlanExplanation& out) {
+  explain_intruder(std::visit([](const auto& bath) { return bath.explanation; }, plan.bath), scene, out);
+  out.effects.push_back("DSMC alternative (002 sec. 4): candidates at rho (|v1| + <|v|>) with the exact majorant "
+                        "|v1 - v| <= |v1| + |v|, bath velocities drawn from f");
+}
+
+std::string storage_note(const StorageChoice& storage) {
+  return std::holds_alternative<StoredAs<float>>(storage) ? ", float storage (16 bytes per particle)" : "";
+}
+
+template <class... Effects>
+void append_names(const EffectList<Effects...>&, std::string& name) {
+  ((name += std::string(", ") + Effects::name), ...);
+}
+
+std::string name_of(const SteppedPlan& plan, const Scene& scene) {
+  std::string name = "dsmc<" + std::visit([](const auto& k) { return std::string(k.name); }, plan.kernel);
+  std::visit([&](const auto& list) { append_names(list, name); }, plan.shear);
+  std::visit([&](const auto& list) { append_names(list, name); }, plan.thermostat);
+  name += ">";
+  if (scene.collision.packing_fraction > 0.0) name += ", Enskog chi in the pair rates";
+  if (std::holds_alternative<RankWaveStage>(plan.backend)) name += ", rank-wave stage over MPI ranks";
+  return name + storage_note(plan.storage);
+}
+
+std::string name_of(const EventPlan& plan, const Scene&) {
+  return std::string("event<") + std::visit([](const auto& k) { return k.name; }, plan.kernel) +
+         (plan.white_noise ? ", white-noise>" : ">") + storage_note(plan.storage);
+}
+
+std::string bath_name(const BathChoice& bath) {
+  return std::visit([](const auto& b) { return std::string(b.name); }, bath);
+}
+
+std::string name_of(const IntruderLinePlan& plan, const Scene&) { return "gillespie-1d<" + bath_name(plan.bath) + ">"; }
+std::string name_of(const NeedlePlan& plan, const Scene&) {
+  return std::string("gillespie-needle<") + plan.bath.name + ">";
+}
+std::string name_of(const IntruderDsmcPlan& plan, const Scene&) {
+  return "dsmc-intruder-1d<" + bath_name(plan.bath) + ">";
+}
+
+}  // namespace
+
+std::size_t stored_bytes_per_particle(const Scene& scene) noexcept {
+  return scene.run.storage == Storage::single_precision ? FloatSpeciesStore::bytes_per_particle()
+                                                        : SpeciesStore::bytes_per_particle();
+}
+
+std::string instantiation_name(const RunPlan& plan, const Scene& scene) {
+  return std::visit([&](const auto& scheme) { return name_of(scheme, scene); }, plan.scheme);
+}
+
+PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int threads) {
+  PlanExplanation out;
+  out.instantiation = instantiation_name(plan, scene);
+  out.replicas_in_flight = std::max(1, std::min(threads, scene.run.replicas));
+  std::visit([&](const auto& scheme) { explain(scheme, scene, out); }, plan.scheme);
+  return out;
+}
+
+}  // namespace granmc

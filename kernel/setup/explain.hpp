@@ -1,0 +1,38 @@
+#pragma once
+// What a plan will do before it does it (`granmc run --explain`): the instantiation, the effects that will
+// act, the memory and an estimate of the work and the time. Read off the plan (setup/run_plan.hpp).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernel/core/scene.hpp"
+#include "kernel/setup/run_plan.hpp"
+
+namespace granmc {
+
+struct PlanExplanation {
+  std::string instantiation;           // instantiation_name(plan, scene)
+  std::vector<std::string> effects;    // every effect and option that will act, in words
+  std::vector<std::string> absent;     // effects the scene does not name (not compiled into the run)
+  bool gas = true;                     // false for an intruder (no particle store)
+  std::size_t bytes_per_particle = 0;  // stored bytes per particle (gas)
+  std::uint64_t particle_bytes = 0;    // particle memory of the replicas in flight at once
+  int replicas_in_flight = 1;          // min(threads, replicas)
+  double candidates = 0.0;             // estimated candidate pairs, all replicas (gas)
+  double events = 0.0;                 // estimated collision events, all replicas (intruder)
+  bool candidates_upper_bound = false; // true when the estimate assumes T stays at T(0)
+  double candidates_per_second = 0.0;  // per thread, this machine's measured rate for such a run (gas)
+};
+
+/// Bytes of particle state per particle in the scene's storage precision (32 for double, 16 for float).
+std::size_t stored_bytes_per_particle(const Scene& scene) noexcept;
+
+/// The explanation of `plan` (made from `scene`) run on `threads` threads.
+PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int threads);
+
+/// A one-line name of what runs, e.g. "dsmc<hard-sphere, gaussian-thermostat>, float storage (16 bytes per
+/// particle)".
+std::string instantiation_name(const RunPlan& plan, const Scene& scene);
+
+}  // namespace granmc

@@ -1,0 +1,114 @@
+// The run plan (kernel/setup/run_plan.hpp): every combination of the scene's kinds is either refused by
+// make_plan, with a reason naming what is not supported, or runs through the dispatch, which compiles only
+// the supported products; the plan holds the evaluators with the scene's parameters; the name and the
+// explanation are read off the plan.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <variant>
+
+#include "io/scene_file.hpp"
+#include "kernel/setup/explain.hpp"
+#include "kernel/setup/run_scene.hpp"
+
+using namespace granmc;
+
+namespace {
+
+struct Kinds {
+  const char* kernel;      // collision.kernel
+  double shear;            // shear.rate
+  double packing;          // collision.packing_fraction
+  const char* thermostat;  // thermostat.kind
+  bool relaxation;
+  const char* storage;
+  int species;
+};
+
+std::string scene_text(const Kinds& k) {
+  std::string t = "[run]\nmethod = \"dsmc\"\nt_end = 0.05\ndt = 0.01\nsamples = 2\nreplicas = 1\nstorage = \"" +
+                  std::string(k.storage) + "\"\n";
+  // With a packing fraction, the densities that give it with unit diameters (the scene file checks it under shear).
+  char density[32];
+  std::snprintf(density, sizeof density, "%.17g", k.packing > 0.0 ? 6.0 * k.packing / (std::numbers::pi * k.species) : 0.1);
+  for (int i = 0; i < k.species; ++i)
+    t += "[[species]]\nname = \"s" + std::to_string(i) + "\"\nparticles = 64\ndensity = " + density + "\n";
+  t += "[collision]\nkernel = \"" + std::string(k.kernel) + "\"\nrestitution = 0.9\n";
+  if (std::string(k.kernel) != "hard-sphere") t += "rate = 0.2\n";
+  if (std::string(k.kernel) == "vhs") t += "lambda = 0.5\n";
+  if (k.packing > 0.0) t += "packing_fraction = " + std::to_string(k.packing) + "\n";
+  t += "[thermostat]\nkind = \"" + std::string(k.thermostat) + "\"\n";
+  if (std::string(k.thermostat) == "white-noise") t += "beta = 0.5\n";
+  if (k.shear != 0.0) t += "[shear]\nrate = " + std::to_string(k.shear) + "\n";
+  if (k.relaxation) t += "[relaxation]\nenabled = true\n";
+  return t;
+}
+
+}  // namespace
+
+TEST(RunPlan, EveryCombinationRunsOrIsRefusedWithAReason) {
+  int ran = 0, refused = 0;
+  for (const char* kernel : {"hard-sphere", "maxwell", "vhs"})
+    for (double shear : {0.0, 0.3})
+      for (double packing : {0.0, 0.1})
+        for (const char* thermostat : {"none", "gaussian", "white-noise"})
+          for (bool relaxation : {false, true})
+            for (const char* storage : {"double", "float"})
+              for (int species : {1, 2}) {
+                const Kinds k{kernel, shear, packing, thermostat, relaxation, storage, species};
+                const std::string text = scene_text(k);
+                Scene scene;
+                try {
+                  scene = parse_scene(text, "combination.toml");
+                } catch (const SceneError&) {  // e.g. a mixture with the rate form: the scene file refuses it
+                  continue;
+                }
+                RunPlan plan;
+                try {
+                  plan = make_plan(scene);
+                } catch (const PlanRefusal& e) {
+                  ++refused;
+                  EXPECT_NE(std::string(e.what()).find("cannot run"), std::string::npos) << e.what();
+                  EXPECT_EQ(plan_refusal(scene), e.what());
+                  continue;
+                }
+                ++ran;
+                EXPECT_TRUE(plan_refusal(scene).empty());
+                const RunResult result = run_plan(plan, scene, {});  // a refused product would throw logic_error
+                EXPECT_EQ(result.replicas.size(), 1u) << text;
+              }
+  // Maxwell and VHS: one species only (rate form), no shear, no relaxation.
+  EXPECT_GT(ran, 20);
+  EXPECT_GT(refused, 20);
+}
+
+TEST(RunPlan, RefusalsNameWhatIsNotSupported) {
+  auto refusal = [](const Kinds& k) { return plan_refusal(parse_scene(scene_text(k), "s.toml")); };
+  EXPECT_NE(refusal({"maxwell", 0.3, 0.0, "none", false, "double", 1}).find("[shear] rate with kernel"),
+            std::string::npos);
+  EXPECT_NE(refusal({"hard-sphere", 0.3, 0.0, "white-noise", false, "double", 1}).find("white-noise thermostat"),
+            std::string::npos);
+  EXPECT_NE(refusal({"hard-sphere", 0.0, 0.0, "gaussian", true, "double", 2}).find("[relaxation] term"),
+            std::string::npos);
+  const Scene float_scene = parse_scene(scene_text({"hard-sphere", 0.0, 0.0, "none", false, "float", 1}), "f.toml");
+  EXPECT_TRUE(plan_refusal(float_scene).empty());
+  EXPECT_NE(plan_refusal(float_scene, Spread::particles).find("run.storage = \"float\""), std::string::npos);
+}
+
+TEST(RunPlan, HoldsTheEvaluatorsWithTheSceneParameters) {
+  const Scene scene = parse_scene(scene_text({"vhs", 0.0, 0.0, "white-noise", false, "float", 1}), "vhs.toml");
+  const RunPlan plan = make_plan(scene);
+  const auto& stepped = std::get<SteppedPlan>(plan.scheme);
+  EXPECT_EQ(std::get<VariableHardSpheres>(stepped.kernel).lambda, 0.5);
+  const WhiteNoise& noise = std::get<0>(std::get<EffectList<WhiteNoise>>(stepped.thermostat).effects);
+  EXPECT_EQ(noise.beta, 0.5);
+  EXPECT_EQ(noise.masses, std::vector<double>{1.0});
+  EXPECT_TRUE(std::holds_alternative<StoredAs<float>>(stepped.storage));
+  EXPECT_EQ(instantiation_name(plan, scene), "dsmc<vhs, white-noise>, float storage (16 bytes per particle)");
+  const PlanExplanation what = explain_plan(plan, scene, 2);
+  EXPECT_EQ(what.bytes_per_particle, 16u);
+  EXPECT_EQ(what.particle_bytes, 64u * 16u);
+  EXPECT_GT(what.candidates, 0.0);
+}
