@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
-.PHONY: all setup configure build run test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-8-shear-rate fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-8-shear-rate fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float intruder-cost accuracy-cost bench-effects stability
 
 all: build
@@ -16,7 +16,7 @@ setup:
 	@bash scripts/setup-deps.sh
 
 $(BUILD)/CMakeCache.txt: | setup
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DGRANMC_WERROR=ON
 
 configure: setup $(BUILD)/CMakeCache.txt
 
@@ -119,12 +119,53 @@ tails-001-full-float: build
 	$(TAILS) drivers/scenes/001_tails/example8.toml --storage float
 	$(TAILS) drivers/scenes/001_tails/example9.toml --storage float
 
-# The suite, then the MPI test in $(MPI_BUILD) (replicas over ranks against one process, docs/scaling.md):
-# installs OpenMPI if missing and builds only granmc and test_mpi there.
+# The habits CI holds the tree to (docs/ARCHITECTURE.md, "Rules"): the lint (clang-format, pyflakes), the suite
+# (built with warnings as errors) at 2 OpenMP threads and again at 1 and 4, the fast tests under the address and
+# undefined-behaviour sanitizers, the SIMD tests for plain x86-64, then the MPI test in $(MPI_BUILD) (replicas
+# over ranks against one process, docs/scaling.md; installs OpenMPI if missing and builds only granmc and
+# test_mpi there).
 test: build
-	ctest --test-dir $(BUILD) --output-on-failure
+	$(MAKE) --no-print-directory lint
+	OMP_NUM_THREADS=2 ctest --test-dir $(BUILD) --output-on-failure
+	$(MAKE) --no-print-directory thread-test
+	$(MAKE) --no-print-directory sanitize-test
 	$(MAKE) --no-print-directory portable-test
 	$(MAKE) --no-print-directory mpi-test
+
+# Every C++ file as .clang-format writes it, every Python file clean under pyflakes. `make format` rewrites the
+# C++ files in place.
+CXX_SOURCES = $(shell git ls-files '*.cpp' '*.hpp' 2>/dev/null)
+PY_SOURCES = $(shell git ls-files '*.py' 2>/dev/null)
+lint: setup
+	clang-format --dry-run --Werror $(CXX_SOURCES)
+	$(PYTHON) -m pyflakes $(PY_SOURCES)
+	@echo "lint: $(words $(CXX_SOURCES)) C++ and $(words $(PY_SOURCES)) Python files clean"
+
+format: setup
+	clang-format -i $(CXX_SOURCES)
+
+# docs/output-format.md, generated from the output schema (io/output_schema.cpp); test_output_format fails while
+# it is stale.
+output-format-page: build
+	$(GRANMC) output-format > docs/output-format.md
+
+# The suite again at 1 and 4 OpenMP threads (replicas over threads; results do not depend on the count:
+# test_threads compares the bits directly).
+thread-test: build
+	OMP_NUM_THREADS=1 ctest --test-dir $(BUILD) --output-on-failure
+	OMP_NUM_THREADS=4 ctest --test-dir $(BUILD) --output-on-failure
+
+# The fast tests (labels unit and cli) built with AddressSanitizer and UndefinedBehaviorSanitizer in
+# $(SANITIZE_BUILD): any finding fails the test.
+SANITIZE_BUILD ?= build-sanitize
+SANITIZE_TESTS = test_scene_file test_output test_core test_threads test_numerics test_viscosity_theory \
+                 test_sonine_sampler test_spread test_run_plan test_cli test_sweep test_output_format
+sanitize-test: setup
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANMC_WERROR=ON -DGRANMC_BENCH=OFF \
+	  -DGRANMC_SANITIZE=address,undefined
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target granmc $(SANITIZE_TESTS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -L 'unit|cli'
 
 # The build above is for this machine's widest registers (AVX-512 here). The SIMD code has other branches,
 # for narrower registers: the tests that hold them to the scalar code (numerics, the store, the event
@@ -132,7 +173,7 @@ test: build
 # $(PORTABLE_BUILD), so that a build for another machine cannot break unseen.
 PORTABLE_BUILD ?= build-portable
 portable-test: setup
-	cmake -S . -B $(PORTABLE_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRANMC_NATIVE=OFF
+	cmake -S . -B $(PORTABLE_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRANMC_NATIVE=OFF -DGRANMC_WERROR=ON
 	cmake --build $(PORTABLE_BUILD) -j $(JOBS) --target test_core test_numerics test_event_scheme
 	ctest --test-dir $(PORTABLE_BUILD) --output-on-failure -R '^(test_core|test_numerics|test_event_scheme)$$'
 
@@ -142,7 +183,7 @@ mpi-setup:
 	@bash scripts/setup-deps.sh --mpi
 
 $(MPI_BUILD)/CMakeCache.txt: | mpi-setup
-	cmake -S . -B $(MPI_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRANMC_MPI=ON
+	cmake -S . -B $(MPI_BUILD) -DCMAKE_BUILD_TYPE=Release -DGRANMC_MPI=ON -DGRANMC_WERROR=ON
 
 mpi-configure: mpi-setup $(MPI_BUILD)/CMakeCache.txt
 
@@ -175,7 +216,7 @@ bench-baseline: build
 	$(PYTHON) perf/bench_compare.py --bin $(BUILD)/bin --rounds $(BENCH_ROUNDS) --save
 
 clean:
-	rm -rf $(BUILD) $(MPI_BUILD)
+	rm -rf $(BUILD) $(MPI_BUILD) $(PORTABLE_BUILD) $(SANITIZE_BUILD)
 
 # Issue 7's stability study: the fast hard cases (ctest -L stability), then the long versions at full size
 # (drivers/scenes/stability/, checks and table in results/stability/table.md; about 4 min).

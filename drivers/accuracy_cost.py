@@ -31,10 +31,10 @@ import os
 import sys
 import tomllib
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from results import open_results  # noqa: E402
 from scene_run import run_point  # noqa: E402
 
 LAMBDA_P = 3.2
@@ -48,7 +48,7 @@ def exact_temperature(t, beta, rate, alpha, t0=1.0):
 
 def late_deviations(stem, scene, n_particle_law):
     """Per replica, the relative deviation of the late-time mean T from the exact value."""
-    with h5py.File(stem + ".h5", "r") as h:
+    with open_results(stem + ".h5") as h:
         times = h["/times"][()]
         temperature = h["/temperature/replicas"][()]
     beta = scene["thermostat"]["beta"]
@@ -71,7 +71,7 @@ def early_slope_deviations(stem):
     """Per replica, the relative deviation of the initial slope of ln T from -zeta_M: ln T(t)/T(0) = s t + b t^2
     fitted by least squares over the samples (the curvature b is left free: it depends on how fast a2
     builds up), deviation -s / zeta_M - 1."""
-    with h5py.File(stem + ".h5", "r") as h:
+    with open_results(stem + ".h5") as h:
         times = h["/times"][()]
         temperature = h["/temperature/replicas"][()]
         zeta_m = h["/theory"].attrs["cooling_rate0_maxwell"]

@@ -13,9 +13,10 @@
 
 #include "drivers/run_job.hpp"
 #include "drivers/sweep.hpp"
+#include "granmc/version.hpp"
+#include "io/output_schema.hpp"
 #include "io/scene_file.hpp"
 #include "io/theory_json.hpp"
-#include "granmc/version.hpp"
 #include "kernel/schemes/spread_dsmc.hpp"
 #include "kernel/setup/explain.hpp"
 #include "kernel/setup/run_plan.hpp"
@@ -51,17 +52,19 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
   if (!absent.empty()) std::printf("not compiled %s (the scene does not name them)\n", absent.c_str());
   if (plan.spread == Spread::particles) {  // docs/scaling.md, "One system over several ranks"
     const double n = static_cast<double>(total_particles(full_scene));
-    std::printf("spread       every replica is one system over %d rank(s), the replicas one after another on one "
-                "thread per rank; per rank %.1f MB of particles and at most %.0f MB of candidate list; it takes "
-                "2-3x the time of one process for each replica (docs/scaling.md)\n",
-                at.size, n * static_cast<double>(what.bytes_per_particle) / at.size / 1e6,
-                static_cast<double>(spread_segment * spread_candidate_bytes) / 1e6);
+    std::printf(
+        "spread       every replica is one system over %d rank(s), the replicas one after another on one "
+        "thread per rank; per rank %.1f MB of particles and at most %.0f MB of candidate list; it takes "
+        "2-3x the time of one process for each replica (docs/scaling.md)\n",
+        at.size, n * static_cast<double>(what.bytes_per_particle) / at.size / 1e6,
+        static_cast<double>(spread_segment * spread_candidate_bytes) / 1e6);
     return exit_ok;
   }
   if (at.size > 1)
-    std::printf("ranks        %d MPI ranks, replica r on rank r mod %d; rank 0 runs %d of the %d replicas, "
-                "memory and work below are rank 0's\n",
-                at.size, at.size, scene.run.replicas, full_scene.run.replicas);
+    std::printf(
+        "ranks        %d MPI ranks, replica r on rank r mod %d; rank 0 runs %d of the %d replicas, "
+        "memory and work below are rank 0's\n",
+        at.size, at.size, scene.run.replicas, full_scene.run.replicas);
   if (!what.gas) {
     std::printf("work         about %.3g collision events (one intruder per replica)\n", what.events);
     return exit_ok;
@@ -163,23 +166,28 @@ int cli_main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   run_cmd->add_option("--seed", run.seed, "Override the scene's run.seed");
   run_cmd->add_flag("--quiet", run.quiet, "No progress line and no closing message");
-  run_cmd->add_option("--spread", run.spread,
-                      "What the MPI ranks share: \"replicas\" (default: each rank runs its replicas) or \"particles\" "
-                      "(each replica is one system spread over all ranks, for systems larger than one machine; "
-                      "docs/scaling.md)")
+  run_cmd
+      ->add_option("--spread", run.spread,
+                   "What the MPI ranks share: \"replicas\" (default: each rank runs its replicas) or \"particles\" "
+                   "(each replica is one system spread over all ranks, for systems larger than one machine; "
+                   "docs/scaling.md)")
       ->check(CLI::IsMember({"replicas", "particles"}));
   run_cmd->add_flag("--explain", run.explain,
                     "Print the kernel, the effects, the memory and a cost estimate, and run nothing");
 
   SweepArgs sweep;
-  CLI::App* sweep_cmd = app.add_subcommand(
-      "sweep", "Run the scenes of a sweep file one after another: one HDF5 file and JSON summary each, and "
-               "index.json; a rerun skips the scenes already done");
+  CLI::App* sweep_cmd =
+      app.add_subcommand("sweep",
+                         "Run the scenes of a sweep file one after another: one HDF5 file and JSON summary each, and "
+                         "index.json; a rerun skips the scenes already done");
   sweep_cmd->add_option("sweep", sweep.sweep, "Sweep file (TOML, see docs/scenes.md, \"Sweep files\")")->required();
   sweep_cmd->add_option("--out-dir", sweep.out_dir,
                         "Directory of the outputs and index.json (default: <sweep name>/ in the current directory)");
   sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress lines, no notes on skipped scenes, no closing message");
+
+  CLI::App* format_cmd = app.add_subcommand(
+      "output-format", "Print the format of the HDF5 file and the JSON summary (Markdown, docs/output-format.md)");
 
   std::string theory_scene;
   CLI::App* theory_cmd = app.add_subcommand("theory", "Print the theory predictions that apply to a scene (JSON)");
@@ -204,6 +212,10 @@ int cli_main(int argc, char** argv) {
   }
   if (*run_cmd) return run_command(run);
   if (*sweep_cmd) return sweep_command(sweep);
+  if (*format_cmd) {
+    if (place().rank == 0) std::cout << output_format_page();
+    return exit_ok;
+  }
   return theory_command(theory_scene);
 }
 

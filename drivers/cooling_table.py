@@ -27,10 +27,10 @@ def main():
     p.add_argument("--relaxed-after", type=float, default=15.0, help="collisions per particle before averaging a2")
     args = p.parse_args()
     try:
-        import h5py
+        from results import open_results
     except ImportError:
         sys.exit("cooling_table.py: needs h5py (Debian python3-h5py); run it with /usr/bin/python3")
-    with h5py.File(args.result, "r") as f:
+    with open_results(args.result) as f:
         if "theory" not in f:
             sys.exit(f"cooling_table.py: {args.result} has no /theory group: not a monodisperse cooling state")
         th = f["theory"]
@@ -48,7 +48,7 @@ def main():
 
         relaxed = coll.mean(axis=0) >= args.relaxed_after
         a2_m, a2_ci = mean_ci(a2_rep[:, relaxed].mean(axis=1))
-        a2_1 = float(th.attrs["a2_sonine"])
+        a2_1 = float(th.attrs["a2"])
         a2_2 = float(th.attrs["a2_second_sonine"])
         a2_err = float(th.attrs["a2_model_error"])
 

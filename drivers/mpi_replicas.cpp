@@ -221,7 +221,8 @@ double WorldRanks::max(double value) const {
   return m;
 }
 
-void WorldRanks::exchange(const std::vector<std::vector<double>>& send, std::vector<std::vector<double>>& receive) const {
+void WorldRanks::exchange(const std::vector<std::vector<double>>& send,
+                          std::vector<std::vector<double>>& receive) const {
   const std::size_t ranks = send.size();
   std::vector<int> send_counts(ranks), send_at(ranks), receive_counts(ranks), receive_at(ranks);
   std::vector<double> out, in;

@@ -11,6 +11,7 @@ Both panels share the time axis: logarithmic when the positive sample times span
 
 Uses Debian's python3-h5py and python3-matplotlib (hence /usr/bin/python3).
 """
+import importlib.util
 import os
 import sys
 
@@ -27,18 +28,20 @@ def text(value):
 
 
 def read(path):
-    import h5py
+    from results import FormatError, open_results
 
     try:
-        f = h5py.File(path, "r")
+        f = open_results(path)
     except OSError as e:
         fail(f"cannot open '{path}' as HDF5: {e}")
+    except FormatError as e:
+        fail(str(e))
     with f:
         for name in ("times", "temperature/mean", "temperature/ci", "species"):
             if name not in f:
                 fail(f"'{path}' has no /{name}; is it a granmc gas result file?")
         run = {
-            "scene": text(f.attrs.get("scene_path", os.path.basename(path))),
+            "scene": text(f.attrs.get("scene", os.path.basename(path))),
             "replicas": int(f.attrs.get("replicas", 0)),
             "method": text(f.attrs.get("method", "simulation")).upper(),
             "particles": int(f.attrs["particles"]) if "particles" in f.attrs else None,
@@ -57,7 +60,7 @@ def read(path):
             })
         if "theory" in f and "haff_temperature" in f["theory"]:
             th = f["theory"]
-            a2 = th.attrs.get("a2_sonine", th["haff_temperature"].attrs.get("a2_sonine"))
+            a2 = th.attrs.get("a2")
             a2_2 = th.attrs.get("a2_second_sonine")
             run["theory"] = {"T": th["haff_temperature"][()], "a2": None if a2 is None else float(a2),
                              "a2_second": None if a2_2 is None else float(a2_2)}
@@ -147,11 +150,10 @@ def main(argv):
     source, out = argv[1], argv[2]
     if not os.path.isfile(source):
         fail(f"no such file: '{source}' (run `granmc run SCENE.toml --out {source}` first)")
-    try:
-        import h5py  # noqa: F401
-        import matplotlib  # noqa: F401
-    except ImportError as e:
-        fail(f"{e}; run this script with /usr/bin/python3 (Debian python3-h5py, python3-matplotlib)")
+    for module in ("h5py", "matplotlib"):
+        if importlib.util.find_spec(module) is None:
+            fail(f"no module named '{module}'; run this script with /usr/bin/python3 (Debian python3-h5py, "
+                 "python3-matplotlib)")
     plot(read(source), out)
     return 0
 

@@ -38,8 +38,8 @@ def main():
     p.add_argument("--theory-json", help="output of `granmc theory` for the scene")
     p.add_argument("--table", help="write a Markdown table of Delta here")
     args = p.parse_args()
-    import h5py
-    with h5py.File(args.result, "r") as f:
+    from results import open_results
+    with open_results(args.result) as f:
         edges = f["speed_shell_edges"][()]
         groups = sorted(f["species"].values(), key=lambda g: int(g.attrs["index"]))
         if len(groups) != 2:
@@ -57,7 +57,7 @@ def main():
         t_j = groups[j]["temperature/replicas"][()][:, first:].mean(axis=1)
         a2 = gi["a2/replicas"][()][:, first:].mean(axis=1)
         a3 = gi["a3/replicas"][()][:, first:].mean(axis=1) if "a3" in gi else None
-        scene = f.attrs["scene_path"]
+        scene = f.attrs["scene"]
     mu_ji = m[j] / (m[i] + m[j])
     volumes = 4.0 * np.pi / 3.0 * (edges[1:] ** 3 - edges[:-1] ** 3)
     centres = 0.5 * (edges[1:] + edges[:-1])

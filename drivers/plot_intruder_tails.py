@@ -42,7 +42,7 @@ def main():
     p.add_argument("out")
     p.add_argument("--fit", nargs=2, type=float, default=[10.0, 100.0], help="|v| window of the tail fit")
     args = p.parse_args()
-    import h5py
+    from results import open_results
     with open(os.path.join(args.out, "figure.json")) as f:
         fig = json.load(f)
     lo, hi = args.fit
@@ -55,9 +55,9 @@ def main():
     for n, pt in enumerate(fig["curves"][0]["points"]):
         alpha = pt["x"]
         path = os.path.join(args.out, pt["hdf5"])  # the sweep's output of this point (figure.py)
-        with h5py.File(path, "r") as h:
+        with open_results(path) as h:
             edges = h["intruder/speed_shell_edges"][()]
-            counts = h["intruder/speed_counts"][()]          # R x K
+            counts = h["intruder/speed_distribution/counts"][()]          # R x K
             samples = h["counters/histogram_samples"][()]    # R
         width = edges[1] - edges[0]
         centres = 0.5 * (edges[1:] + edges[:-1])

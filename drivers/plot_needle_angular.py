@@ -12,8 +12,9 @@ import math
 import os
 import sys
 
-import h5py
 import numpy as np
+
+from results import open_results
 
 
 def main():
@@ -21,10 +22,10 @@ def main():
         sys.exit(__doc__)
     path, out = sys.argv[1], sys.argv[2]
     os.makedirs(out, exist_ok=True)
-    with h5py.File(path, "r") as h:
+    with open_results(path) as h:
         edges = h["/intruder/angular_shell_edges"][()]
-        mean = h["/intruder/angular_distribution_mean"][()]
-        ci = h["/intruder/angular_distribution_ci"][()]
+        mean = h["/intruder/angular_distribution/mean"][()]
+        ci = h["/intruder/angular_distribution/ci"][()]
         omega = h["/intruder/angular_velocity"][()]  # [replicas, samples]
     first = omega.shape[1] // 2  # the last half, as the summary (first_stationary_sample)
     w = omega[:, first:]

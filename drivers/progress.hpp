@@ -14,8 +14,7 @@ class ProgressLine {
  public:
   enum class Mode { off, terminal, log };
   /// `log_interval`: the time between two lines in Mode::log.
-  ProgressLine(std::uint64_t total_ticks, Mode mode,
-               std::chrono::milliseconds log_interval = std::chrono::minutes(1));
+  ProgressLine(std::uint64_t total_ticks, Mode mode, std::chrono::milliseconds log_interval = std::chrono::minutes(1));
   ~ProgressLine();
   void tick();
   /// Ends the progress line (if one was printed in place) so that later output starts on a fresh line.

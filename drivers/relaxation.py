@@ -25,10 +25,10 @@ import subprocess
 import sys
 import tomllib
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from results import open_results  # noqa: E402
 from scene_run import run_point  # noqa: E402  (cached by scene text)
 
 PAPER_TABLES = {  # 001 Tables 1 and 2: n -> (E_max, ||V||_inf)
@@ -69,7 +69,7 @@ def main():
         stem = os.path.join(out, "points", f"n{n}")
         summary = run_point(args.granmc, scene, stem, args.threads)
         th = theory(args.granmc, stem + ".toml")
-        with h5py.File(stem + ".h5", "r") as h:
+        with open_results(stem + ".h5") as h:
             times = h["/times"][()]
             temperature = h["/temperature/replicas"][()]          # [replicas, samples]
             momentum = h["/momentum/replicas"][()]                # [replicas, samples, 3]

@@ -11,8 +11,8 @@
 #include "io/hdf5_output.hpp"
 #include "io/run_report.hpp"
 #include "io/summary_json.hpp"
-#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/run_options.hpp"
+#include "kernel/setup/run_scene.hpp"
 #ifdef GRANMC_HAVE_MPI
 #include "drivers/mpi_replicas.hpp"
 #endif
@@ -68,7 +68,7 @@ bool rank0_value(bool value) {
 JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet) {
   const bool spread_particles = plan.spread == Spread::particles;
   const Place at = place();
-  const ProgressLine::Mode progress_mode = at.rank != 0 || quiet ? ProgressLine::Mode::off
+  const ProgressLine::Mode progress_mode = at.rank != 0 || quiet   ? ProgressLine::Mode::off
                                            : isatty(STDERR_FILENO) ? ProgressLine::Mode::terminal
                                                                    : ProgressLine::Mode::log;
   const int replicas_here = spread_particles ? scene.run.replicas : own_replicas(scene.run.replicas, at);
@@ -109,7 +109,8 @@ int run_failure(const std::exception& e) {
     return exit_run_failure;
   }
   std::cerr << "granmc: run failed on MPI rank " << at.rank << " of " << at.size << ": " << e.what()
-            << "\n(ending all ranks)\n" << std::flush;
+            << "\n(ending all ranks)\n"
+            << std::flush;
 #ifdef GRANMC_HAVE_MPI
   mpi::abort_all(exit_run_failure);
 #endif

@@ -22,6 +22,8 @@ import tempfile
 
 import numpy as np
 
+from results import open_results
+
 LAMBDA_P = 3.2  # granmc's CI half-width in standard errors (docs/physics.md, replica statistics)
 
 
@@ -58,9 +60,8 @@ def fit_intercept(a_star, eta, sigma):
 
 def theory(granmc, hdf5):
     """First-Sonine eta* and eta(alpha)/eta(1) of the scene a sweep ran (the text its HDF5 file stores)."""
-    import h5py
-    with h5py.File(hdf5, "r") as h:
-        text = h.attrs["scene"]
+    with open_results(hdf5) as h:
+        text = h.attrs["scene_text"]
     with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
         f.write(text if isinstance(text, str) else text.decode())
     try:

@@ -17,9 +17,9 @@
 
 #include "drivers/cli.hpp"
 #include "drivers/run_job.hpp"
+#include "granmc/version.hpp"
 #include "io/summary_json.hpp"
 #include "io/sweep_file.hpp"
-#include "granmc/version.hpp"
 #include "kernel/setup/run_plan.hpp"
 #ifdef GRANMC_HAVE_MPI
 #include "drivers/mpi_replicas.hpp"
@@ -101,7 +101,8 @@ std::string summary_name(const SweepScene& s) { return s.name + ".json"; }
 
 /// Runs one scene of the sweep as `granmc run` would, writing its two files into `dir`.
 void run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& args) {
-  run_job(s.scene, make_plan(s.scene), {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads, args.quiet);
+  run_job(s.scene, make_plan(s.scene), {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads,
+          args.quiet);
 }
 
 nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, const std::vector<std::string>& hashes,
@@ -123,8 +124,8 @@ nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, con
 /// The scenes not done, whole scenes on `groups` groups of consecutive ranks (each scene's replicas over
 /// its group, as `granmc run` spreads them): in round r, group g runs the (r groups + g)-th scene left.
 /// After each round every rank learns which scenes are done, and world rank 0 rewrites the index.
-void run_in_groups(const SweepArgs& args, const Sweep& sweep, const fs::path& dir, const std::vector<std::string>& hashes,
-                   std::vector<bool>& done, int groups, bool world_root) {
+void run_in_groups(const SweepArgs& args, const Sweep& sweep, const fs::path& dir,
+                   const std::vector<std::string>& hashes, std::vector<bool>& done, int groups, bool world_root) {
   std::vector<std::size_t> todo;
   for (std::size_t k = 0; k < done.size(); ++k)
     if (!done[k]) todo.push_back(k);
@@ -153,9 +154,7 @@ void run_in_groups(const SweepArgs& args, const Sweep& sweep, const fs::path& di
 }
 #endif
 
-std::string plural(std::size_t n, const char* word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
+std::string plural(std::size_t n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
 }  // namespace
 
@@ -209,8 +208,8 @@ int sweep_command(const SweepArgs& args) {
     int most_replicas = 1;
     for (std::size_t k = 0; k < count; ++k)
       if (!done[k]) most_replicas = std::max(most_replicas, sweep.scenes[k].scene.run.replicas);
-    const int groups = static_cast<int>(std::min<std::size_t>(std::max<std::size_t>(to_run, 1),
-                                                              static_cast<std::size_t>(std::max(1, at.size / most_replicas))));
+    const int groups = static_cast<int>(std::min<std::size_t>(
+        std::max<std::size_t>(to_run, 1), static_cast<std::size_t>(std::max(1, at.size / most_replicas))));
 #ifdef GRANMC_HAVE_MPI
     if (groups > 1) run_in_groups(args, sweep, dir, hashes, done, groups, at.rank == 0);
 #endif

@@ -46,8 +46,9 @@ import json
 import math
 import os
 
-import h5py
 import numpy as np
+
+from results import open_results
 
 LAMBDA_P = 3.2
 
@@ -55,7 +56,7 @@ LAMBDA_P = 3.2
 def load_run(path):
     """The shell counts [replicas, shells], the shell edges, the method, T at the first sample (t = 0, the
     replica mean) and the mass of the (first) species."""
-    with h5py.File(path, "r") as h:
+    with open_results(path) as h:
         species = [k for k in h["/species"].keys()]
         g = h[f"/species/{species[0]}/speed_distribution"]
         counts = g["counts"][()]  # [replicas, shells]

@@ -69,8 +69,9 @@ MeanCISeries per_index(std::size_t replicas, std::size_t n, Pick pick) {
 /// Replica mean and CI at each sample time.
 template <class Pick>
 MeanCISeries per_time(const RunResult& result, Pick pick) {
-  return per_index(result.replicas.size(), result.times.size(),
-                   [&](std::size_t r) -> const auto& { return pick(result.replicas[r]); });
+  return per_index(
+      result.replicas.size(),
+      result.times.size(), [&](std::size_t r) -> const auto& { return pick(result.replicas[r]); });
 }
 
 /// Phi_i(v*) = counts / (N_i samples shell volume) for every replica: the scaled speed distribution,
@@ -118,7 +119,8 @@ MeanCISeries count_density(const RunResult& result, double width,
     for (double c : counts(s)) d.push_back(c / (static_cast<double>(s.histogram_samples) * width));
     density.push_back(std::move(d));
   }
-  return per_index(density.size(), density.front().size(), [&](std::size_t r) -> const auto& { return density[r]; });
+  return per_index(
+      density.size(), density.front().size(), [&](std::size_t r) -> const auto& { return density[r]; });
 }
 
 NeedleReport needle_report(const Scene& scene, const RunResult& result) {
@@ -149,8 +151,8 @@ NeedleReport needle_report(const Scene& scene, const RunResult& result) {
   const std::size_t shells = result.replicas.front().intruder->angular_counts.size();
   const double width = scene.histogram.radius / static_cast<double>(shells);
   for (std::size_t k = 0; k <= shells; ++k) out.angular_shell_edges.push_back(width * static_cast<double>(k));
-  out.angular_distribution =
-      count_density(result, width, [](const ReplicaSeries& s) -> const std::vector<double>& { return s.intruder->angular_counts; });
+  out.angular_distribution = count_density(
+      result, width, [](const ReplicaSeries& s) -> const std::vector<double>& { return s.intruder->angular_counts; });
   return out;
 }
 
@@ -172,9 +174,10 @@ IntruderReport intruder_report(const Scene& scene, const RunResult& result) {
   const std::size_t shells = result.replicas.front().intruder->speed_counts.size();
   const double width = scene.histogram.radius / static_cast<double>(shells);
   for (std::size_t k = 0; k <= shells; ++k) out.speed_shell_edges.push_back(width * static_cast<double>(k));
-  out.speed_distribution =
-      count_density(result, width, [](const ReplicaSeries& s) -> const std::vector<double>& { return s.intruder->speed_counts; });
-  for (const ReplicaSeries& s : result.replicas) out.events += static_cast<std::uint64_t>(std::llround(s.collisions.back()));
+  out.speed_distribution = count_density(
+      result, width, [](const ReplicaSeries& s) -> const std::vector<double>& { return s.intruder->speed_counts; });
+  for (const ReplicaSeries& s : result.replicas)
+    out.events += static_cast<std::uint64_t>(std::llround(s.collisions.back()));
   return out;
 }
 
@@ -215,9 +218,11 @@ ViscosityReport viscosity_report(const Scene& scene, const RunResult& result) {
   }
   const std::size_t replicas = result.replicas.size();
   auto rows = [&](const std::vector<std::vector<double>>& v) {
-    return per_index(replicas, samples, [&](std::size_t r) -> const auto& { return v[r]; });
+    return per_index(
+        replicas, samples, [&](std::size_t r) -> const auto& { return v[r]; });
   };
-  out.reduced_shear_rate = per_time(result, [](const ReplicaSeries& s) -> const auto& { return s.reduced_shear_rate; });
+  out.reduced_shear_rate = per_time(
+      result, [](const ReplicaSeries& s) -> const auto& { return s.reduced_shear_rate; });
   out.pressure_xy = rows(p_xy);
   out.pressure_kinetic_xy = rows(pk_xy);
   out.eta_star = rows(eta);
@@ -232,7 +237,9 @@ ViscosityReport viscosity_report(const Scene& scene, const RunResult& result) {
     out.eta_over_eta0 = MeanCI{to_eta0 * out.eta.mean, to_eta0 * out.eta.ci};
     out.eta_kinetic_over_eta0 = MeanCI{to_eta0 * out.eta_kinetic.mean, to_eta0 * out.eta_kinetic.ci};
   }
-  const double t_final = per_time(result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; }).mean.back();
+  const double t_final = per_time(
+                             result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; })
+                             .mean.back();
   const double to_scene = total_density(scene) * t_final / effective_collision_frequency(scene, t_final);
   out.eta_scene_units = MeanCI{to_scene * out.eta.mean, to_scene * out.eta.ci};
   out.eta_kinetic_scene_units = MeanCI{to_scene * out.eta_kinetic.mean, to_scene * out.eta_kinetic.ci};
@@ -274,7 +281,8 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
         result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a2; });
     sp.a2_last_half =
         last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a2[k]; });
-    sp.a3 = per_time(result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a3; });
+    sp.a3 = per_time(
+        result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a3; });
     sp.a3_last_half =
         last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a3[k]; });
     const std::size_t shells = result.replicas.front().species[i].speed_counts.size();
@@ -284,7 +292,8 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
           report.speed_shell_edges.push_back(scene.histogram.radius * static_cast<double>(k) / shells);
       const auto phi =
           speed_distributions(result, i, report.speed_shell_edges, static_cast<double>(scene.species[i].particles));
-      sp.speed_distribution = per_index(phi.size(), shells, [&](std::size_t r) -> const auto& { return phi[r]; });
+      sp.speed_distribution = per_index(
+          phi.size(), shells, [&](std::size_t r) -> const auto& { return phi[r]; });
     }
     report.species.push_back(std::move(sp));
   }

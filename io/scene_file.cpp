@@ -1,13 +1,10 @@
 #include "io/scene_file.hpp"
 
-#include <toml++/toml.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -15,10 +12,13 @@
 #include <initializer_list>
 #include <iterator>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
+
+#include <toml++/toml.h>
 
 namespace granmc {
 
@@ -476,8 +476,9 @@ void Reader::read_run(const Section& s, RunConfig& run) const {
   run.sample_spacing =
       choice<SampleSpacing>(s, "sample_spacing", {{"linear", SampleSpacing::linear}, {"log", SampleSpacing::log}})
           .value_or(run.sample_spacing);
-  run.storage = choice<Storage>(s, "storage", {{"double", Storage::double_precision}, {"float", Storage::single_precision}})
-                    .value_or(run.storage);
+  run.storage =
+      choice<Storage>(s, "storage", {{"double", Storage::double_precision}, {"float", Storage::single_precision}})
+          .value_or(run.storage);
 
   const auto dt = number(s, "dt", "a finite number >= 0");
   if (dt) run.dt = non_negative(s.key("dt"), *dt);
@@ -777,11 +778,13 @@ void Reader::read(const toml::table& root, Scene& scene) const {
   // across sigma_ij, 000 eq. 18), so phi must be the packing fraction of the species as given.
   if (const double phi = scene.collision.packing_fraction; scene.shear_rate != 0.0 && phi > 0.0) {
     double from_species = 0.0;
-    for (const SpeciesConfig& sp : scene.species) from_species += std::numbers::pi / 6.0 * sp.density * std::pow(sp.diameter, 3);
+    for (const SpeciesConfig& sp : scene.species)
+      from_species += std::numbers::pi / 6.0 * sp.density * std::pow(sp.diameter, 3);
     if (!(std::fabs(from_species - phi) <= 1e-6 * phi))
       fail("shear.rate", "with collision.packing_fraction = " + std::to_string(phi) +
                              " needs species densities and diameters with sum_i pi n_i sigma_i^3 / 6 = phi (now " +
-                             std::to_string(from_species) + "): under shear the Enskog contact shift and collisional "
+                             std::to_string(from_species) +
+                             "): under shear the Enskog contact shift and collisional "
                              "transfer depend on n and sigma themselves (000 eqs. 2, 18); for one species of "
                              "diameter 1 set density = 6 phi / pi");
   }
@@ -794,8 +797,11 @@ void Reader::read(const toml::table& root, Scene& scene) const {
          "003 acts together with the Gaussian thermostat); set [thermostat] kind = \"gaussian\"");
   }
   if (const auto a2 = number(relaxation, "a2", "a number in [-0.5, 0.5]")) {
-    if (!(std::fabs(*a2) <= 0.5)) fail("relaxation.a2", "must be in [-0.5, 0.5] (the Sonine-corrected Maxwellian "
-                                                        "is sampled from its positive part), got " + std::to_string(*a2));
+    if (!(std::fabs(*a2) <= 0.5))
+      fail("relaxation.a2",
+           "must be in [-0.5, 0.5] (the Sonine-corrected Maxwellian "
+           "is sampled from its positive part), got " +
+               std::to_string(*a2));
     if (!scene.relaxation) fail("relaxation.a2", "applies only with enabled = true");
     scene.relaxation_a2 = *a2;
   }

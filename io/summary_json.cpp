@@ -8,10 +8,12 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
-#include "granmc/version.hpp"
-#include "io/theory_json.hpp"
+#include "io/output_schema.hpp"
 
 namespace granmc {
 namespace {
@@ -25,82 +27,50 @@ nlohmann::json numbers(const std::vector<double>& xs) {
   return a;
 }
 
-nlohmann::json mean_ci(const MeanCISeries& s) { return {{"mean", numbers(s.mean)}, {"ci", numbers(s.ci)}}; }
-nlohmann::json mean_ci(const MeanCI& m) { return {{"mean", number(m.mean)}, {"ci", number(m.ci)}}; }
+nlohmann::json to_json(const RecordValue& value) {
+  return std::visit(
+      [](const auto& v) -> nlohmann::json {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, double>)
+          return number(v);
+        else if constexpr (std::is_same_v<T, std::vector<double>>)
+          return numbers(v);
+        else if constexpr (std::is_same_v<T, MeanCI>)
+          return {{"mean", number(v.mean)}, {"ci", number(v.ci)}};
+        else if constexpr (std::is_same_v<T, MeanCISeries>)
+          return {{"mean", numbers(v.mean)}, {"ci", numbers(v.ci)}};
+        else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::uint64_t> ||
+                           std::is_same_v<T, bool>)
+          return v;
+        else
+          return nullptr;  // rows and groups are not in the summary
+      },
+      value);
+}
 
 }  // namespace
 
 nlohmann::json summary_json(const Scene& scene, const RunResult& result, const RunReport& report) {
-  nlohmann::json j;
-  j["scene"] = scene.source_path;
-  j["seed"] = scene.run.seed;
-  j["replicas"] = result.replicas.size();
-  j["method"] = report.method;
-  j["wall_seconds"] = number(report.wall_seconds);
-  j["collisions"] = report.collisions;
-  j["candidates"] = report.candidates;
-  j["majorant_updates"] = report.majorant_updates;
-  if (report.method == "event") j["majorant_violations"] = report.majorant_violations;
-  j["rescales"] = report.rescales;
-  if (report.energy_residual) j["energy_residual_max"] = number(*report.energy_residual);
-  j["threads"] = result.threads;
-  j["ranks"] = result.ranks;
-  j["version"] = granmc::version;
-  j["times"] = numbers(result.times);
-  j["temperature"] = mean_ci(report.temperature);
-  j["log_temperature"] = mean_ci(report.log_temperature);
-  if (report.momentum_relative.size() > 0) j["momentum_relative"] = mean_ci(report.momentum_relative);
-  if (report.intruder) {
-    const IntruderReport& in = *report.intruder;
-    j["intruder"] = {{"temperature_ratio", mean_ci(in.temperature_ratio)},
-                     {"bath_temperature", number(in.bath_temperature)},
-                     {"events", in.events},
-                     {"speed_shell_edges", numbers(in.speed_shell_edges)},
-                     {"speed_distribution", mean_ci(in.speed_distribution)}};
-    if (in.temperature_ratio_exact) j["intruder"]["temperature_ratio_exact"] = number(*in.temperature_ratio_exact);
-    if (in.needle) {
-      const NeedleReport& n = *in.needle;
-      j["intruder"]["R"] = mean_ci(n.correlation);
-      j["intruder"]["rotational_temperature_ratio"] = mean_ci(n.rotational_temperature_ratio);
-      j["intruder"]["angular_shell_edges"] = numbers(n.angular_shell_edges);
-      j["intruder"]["angular_distribution"] = mean_ci(n.angular_distribution);
-      j["intruder"]["newton_iterations"] = n.newton_iterations;
-      j["intruder"]["bisection_fallbacks"] = n.bisection_fallbacks;
+  const RunOutput output{scene, result, report};
+  nlohmann::json j = nlohmann::json::object();
+  j["species"] = nlohmann::json::array();  // SCENES.md: present, empty for an intruder scene
+  const std::string species_mark = "{species}";
+  for (const OutputRecord& record : output_records()) {
+    if (!record.summary || record.kind == RecordKind::rows || record.kind == RecordKind::count_rows ||
+        record.kind == RecordKind::group)
+      continue;
+    const bool per_species = record.path.find(species_mark) != std::string::npos;
+    for (std::size_t i = 0; i < (per_species ? report.species.size() : 1); ++i) {
+      const std::optional<RecordValue> value = record.value(output, i);
+      if (!value) continue;
+      nlohmann::json* at = &j;
+      std::size_t from = 0;
+      for (std::size_t slash; (slash = record.path.find('/', from)) != std::string::npos; from = slash + 1) {
+        const std::string segment = record.path.substr(from, slash - from);
+        at = segment == species_mark ? &(*at)[i] : &(*at)[segment];
+      }
+      (*at)[record.path.substr(from)] = to_json(*value);
     }
-  }
-  nlohmann::json species = nlohmann::json::array();
-  for (const SpeciesReport& sp : report.species)
-    species.push_back({{"name", sp.name},
-                       {"temperature", mean_ci(sp.temperature)},
-                       {"a2", mean_ci(sp.a2)},
-                       {"a2_last_half", mean_ci(sp.a2_last_half)},
-                       {"a3", mean_ci(sp.a3)},
-                       {"a3_last_half", mean_ci(sp.a3_last_half)},
-                       {"speed_distribution", mean_ci(sp.speed_distribution)}});
-  j["species"] = std::move(species);
-  j["speed_shell_edges"] = numbers(report.speed_shell_edges);
-  if (report.temperature_ratio) j["temperature_ratio"] = mean_ci(*report.temperature_ratio);
-  if (report.viscosity) {
-    const ViscosityReport& v = *report.viscosity;
-    nlohmann::json& out = j["viscosity"];
-    out = {{"eta", mean_ci(v.eta_scene_units)},
-           {"eta_kinetic", mean_ci(v.eta_kinetic_scene_units)},
-           {"eta_star", mean_ci(v.eta)},
-           {"eta_kinetic_star", mean_ci(v.eta_kinetic)},
-           {"window_start", number(v.window_start)},
-           {"reduced_shear_rate_range", numbers({v.reduced_shear_rate_min, v.reduced_shear_rate_max})},
-           {"drift", mean_ci(v.drift)},
-           {"steady", v.steady},
-           {"reduced_shear_rate", mean_ci(v.reduced_shear_rate)},
-           {"pressure_xy", mean_ci(v.pressure_xy)},
-           {"eta_star_series", mean_ci(v.eta_star)}};
-    if (v.eta_over_eta0) {
-      out["eta_over_eta0"] = mean_ci(*v.eta_over_eta0);
-      out["eta_kinetic_over_eta0"] = mean_ci(*v.eta_kinetic_over_eta0);
-    }
-  }
-  if (report.theory) {
-    j["theory"] = cooling_state_json(*report.theory);
   }
   return j;
 }

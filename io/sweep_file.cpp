@@ -1,7 +1,5 @@
 #include "io/sweep_file.hpp"
 
-#include <toml++/toml.h>
-
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -13,6 +11,8 @@
 #include <set>
 #include <sstream>
 #include <utility>
+
+#include <toml++/toml.h>
 
 #include "io/scene_file.hpp"
 
@@ -49,7 +49,9 @@ std::string toml_leaf(const toml::node& n) {  // strings, booleans, dates and ti
   return os.str();
 }
 
-std::string key_text(std::string_view k) { return bare_key(k) ? std::string(k) : toml_leaf(toml::value<std::string>(k)); }
+std::string key_text(std::string_view k) {
+  return bare_key(k) ? std::string(k) : toml_leaf(toml::value<std::string>(k));
+}
 
 /// A table's entries in the order of the file they were read from; entries set by the sweep come last, in
 /// key order (toml++ does not copy source positions, so the text does not depend on the sweep file's layout).
@@ -122,7 +124,7 @@ struct Step {
 };
 
 struct Setting {
-  std::string key;          // as dotted in the sweep file: "collision.restitution", "species[1].mass"
+  std::string key;  // as dotted in the sweep file: "collision.restitution", "species[1].mass"
   std::vector<Step> steps;
   const toml::node* value;  // in the sweep file's table (lives as long as it)
 };
@@ -130,7 +132,8 @@ struct Setting {
 /// Settings of a sweep-file table, its sub-tables flattened ("collision.restitution" = x, collision.restitution
 /// = x and collision = { restitution = x } all set collision.restitution), in the order of the file.
 /// Recursion stops at anything that is not a table: an array is one value (a grid's list, a matrix).
-void flatten(const toml::table& t, const std::string& prefix, std::vector<std::pair<std::string, const toml::node*>>& out) {
+void flatten(const toml::table& t, const std::string& prefix,
+             std::vector<std::pair<std::string, const toml::node*>>& out) {
   for (const auto& [k, n] : in_source_order(t)) {
     const std::string key = prefix.empty() ? k : prefix + "." + k;
     if (const auto* sub = n->as_table()) {
@@ -142,8 +145,9 @@ void flatten(const toml::table& t, const std::string& prefix, std::vector<std::p
 }
 
 std::vector<Step> key_steps(const std::string& key, const std::string& where) {
-  const std::string bad = where + ": not a scene key; write table.key as in docs/scenes.md, with [i] to choose one "
-                                  "of several tables (collision.restitution, species[1].mass)";
+  const std::string bad = where +
+                          ": not a scene key; write table.key as in docs/scenes.md, with [i] to choose one "
+                          "of several tables (collision.restitution, species[1].mass)";
   std::vector<Step> steps;
   std::size_t at = 0;
   while (true) {
@@ -165,8 +169,7 @@ std::vector<Step> key_steps(const std::string& key, const std::string& where) {
     if (end == key.size()) break;
     at = end + 1;
   }
-  if (steps.back().index)
-    throw SweepError(where + ": [i] chooses a table; name a key in it, e.g. species[1].mass");
+  if (steps.back().index) throw SweepError(where + ": [i] chooses a table; name a key in it, e.g. species[1].mass");
   return steps;
 }
 
@@ -185,15 +188,16 @@ void apply(toml::table& root, const Setting& s, const std::string& where) {
         throw SweepError(where + ": the base scene has no [[" + path + "]] tables for [i] to choose from");
       if (*step.index >= a->size())
         throw SweepError(where + ": the base scene has " + std::to_string(a->size()) + " [[" + path + "]] table" +
-                         (a->size() == 1 ? "" : "s") + ", so " + step.name + "[i] needs i < " + std::to_string(a->size()));
+                         (a->size() == 1 ? "" : "s") + ", so " + step.name + "[i] needs i < " +
+                         std::to_string(a->size()));
       t = a->get(*step.index)->as_table();
       path += '[';
       path += std::to_string(*step.index) + ']';
     } else if (!n) {
       t = t->insert(step.name, toml::table{}).first->second.as_table();
     } else if (is_table_array(*n)) {
-      throw SweepError(where + ": " + path + " is a list of [[" + path + "]] tables in the base scene; choose one with " +
-                       step.name + "[i]");
+      throw SweepError(where + ": " + path + " is a list of [[" + path +
+                       "]] tables in the base scene; choose one with " + step.name + "[i]");
     } else if (!(t = n->as_table())) {
       throw SweepError(where + ": " + path + " is a value in the base scene, not a table");
     }
@@ -218,7 +222,8 @@ nlohmann::json json_value(const toml::node& n) {
 std::string file_safe(std::string_view s) {
   std::string out;
   for (const char c : s)
-    if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' || c == '+' || c == ',') out += c;
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' || c == '+' || c == ',')
+      out += c;
   return out;
 }
 
@@ -269,7 +274,8 @@ std::vector<std::vector<Setting>> read_settings(const toml::table& root, const s
     std::vector<std::size_t> at(axes.size(), 0);  // an odometer over the axes, the last turning fastest
     while (true) {
       std::vector<Setting> scene;
-      for (std::size_t k = 0; k < axes.size(); ++k) scene.push_back({keys[k].first, axes[k].first, axes[k].second->get(at[k])});
+      for (std::size_t k = 0; k < axes.size(); ++k)
+        scene.push_back({keys[k].first, axes[k].first, axes[k].second->get(at[k])});
       scenes.push_back(std::move(scene));
       std::size_t k = axes.size();
       while (k > 0 && ++at[k - 1] == axes[k - 1].second->size()) at[--k] = 0;
@@ -326,8 +332,11 @@ Sweep load_sweep(const std::string& path) {
     if (k != "base" && k != "grid" && k != "scenes")
       throw SweepError(path + ": " + key_text(k.str()) + ": unknown key; " + std::string(kAllowed));
   const toml::node* base = root.get("base");
-  if (!base) throw SweepError(path + ": base: missing; name the base scene, e.g. base = \"hcs.toml\" (relative to the sweep file)");
-  if (!base->is_string()) throw SweepError(path + ": base: expected a string, the base scene's path relative to the sweep file");
+  if (!base)
+    throw SweepError(path +
+                     ": base: missing; name the base scene, e.g. base = \"hcs.toml\" (relative to the sweep file)");
+  if (!base->is_string())
+    throw SweepError(path + ": base: expected a string, the base scene's path relative to the sweep file");
 
   Sweep sweep;
   sweep.base_path = (fs::path(path).parent_path() / base->as_string()->get()).string();
@@ -355,7 +364,8 @@ Sweep load_sweep(const std::string& path) {
     for (const Setting& setting : settings[i]) {
       if (s.values.contains(setting.key))
         throw SweepError(path + ": " + setting.key + ": set twice for one scene (a dotted and a nested spelling?)");
-      apply(table, setting, path + ": " + (root.contains("grid") ? "grid." : "scenes[" + std::to_string(i) + "].") + setting.key);
+      apply(table, setting,
+            path + ": " + (root.contains("grid") ? "grid." : "scenes[" + std::to_string(i) + "].") + setting.key);
       s.values[setting.key] = json_value(*setting.value);
       label += s.values.size() == 1 ? " with " : ", ";
       label += setting.key + " = " + value_text(*setting.value);

@@ -52,10 +52,10 @@ nlohmann::json scene_theory_json(const Scene& scene) {
   if (scene.intruder) {
     const IntruderConfig& in = *scene.intruder;
     // 002 eq. (22), the Gaussian-bath result, also as the reference line of 002 Fig. 4 for other baths.
-    j["intruder"] = {{"bath", in.bath == BathKind::gaussian ? "gaussian" : "power-law"},
-                     {"bath_temperature", theory::bath_temperature(in)},
-                     {"temperature_ratio_gaussian_bath",
-                      (1.0 + in.restitution) / (2.0 + (1.0 - in.restitution) / in.mass)}};
+    j["intruder"] = {
+        {"bath", in.bath == BathKind::gaussian ? "gaussian" : "power-law"},
+        {"bath_temperature", theory::bath_temperature(in)},
+        {"temperature_ratio_gaussian_bath", (1.0 + in.restitution) / (2.0 + (1.0 - in.restitution) / in.mass)}};
     if (const auto exact = theory::intruder_temperature_ratio(*scene.intruder)) {
       applies.push_back("1D intruder: exact stationary T/T_B (002 eq. 22, or alpha for the power law with M = alpha)");
       j["intruder"]["temperature_ratio_exact"] = *exact;
@@ -67,25 +67,26 @@ nlohmann::json scene_theory_json(const Scene& scene) {
     const double lambda = scene.collision.lambda;
     j["times"] = times;
     if (lambda == 0.0) {
-      applies.push_back("Maxwell pseudomolecules: exact temperature relaxation (001 eqs. 16-17), and (1 - 1/n) "
-                        "times it for the n-particle system (docs/physics.md)");
+      applies.push_back(
+          "Maxwell pseudomolecules: exact temperature relaxation (001 eqs. 16-17), and (1 - 1/n) "
+          "times it for the n-particle system (docs/physics.md)");
       const double n = static_cast<double>(scene.species[0].particles);
       std::vector<double> exact, particles;
       for (double t : times) {
         exact.push_back(theory::maxwell_temperature(t, scene.initial_temperature, beta, rate, alpha));
-        particles.push_back(
-            theory::maxwell_temperature_particles(t, scene.initial_temperature, beta, rate, alpha, n));
+        particles.push_back(theory::maxwell_temperature_particles(t, scene.initial_temperature, beta, rate, alpha, n));
       }
       j["maxwell_relaxation"] = {{"rate", theory::maxwell_relaxation_rate(rate, alpha)},
                                  {"temperature", exact},
                                  {"temperature_particles", particles}};
     }
     if (beta > 0.0) {
-      applies.push_back("white-noise heated steady state: temperature from the energy balance (001 eq. 15), "
-                        "tail exponent b = 1 + lambda/2 (001 eqs. 19-21)");
-      nlohmann::json w = {{"tail_exponent", theory::tail_exponent(lambda)},
-                          {"steady_temperature_maxwellian",
-                           theory::white_noise_steady_temperature(lambda, rate, alpha, beta, 0.0)}};
+      applies.push_back(
+          "white-noise heated steady state: temperature from the energy balance (001 eq. 15), "
+          "tail exponent b = 1 + lambda/2 (001 eqs. 19-21)");
+      nlohmann::json w = {
+          {"tail_exponent", theory::tail_exponent(lambda)},
+          {"steady_temperature_maxwellian", theory::white_noise_steady_temperature(lambda, rate, alpha, beta, 0.0)}};
       if (lambda == 1.0) {
         const double a2 = theory::white_noise_a2(alpha);
         w["a2"] = a2;
@@ -144,12 +145,12 @@ nlohmann::json scene_theory_json(const Scene& scene) {
       const SpeciesConfig &a = scene.species[0], &b = scene.species[1];
       const theory::MixtureViscosityRatios m = theory::mixture_viscosity_from_ratios(
           a.mass / b.mass, a.diameter / b.diameter, a.density / b.density, alpha, phi, reference);
-      v["first_sonine"] = {{"eta_over_eta_elastic", m.over_elastic},
-                           {"eta_kinetic_star", m.kinetic_star},
-                           {"eta_star", m.star}};
+      v["first_sonine"] = {
+          {"eta_over_eta_elastic", m.over_elastic}, {"eta_kinetic_star", m.kinetic_star}, {"eta_star", m.star}};
     }
-    applies.push_back("uniform shear flow, hard spheres: first-Sonine Navier-Stokes shear viscosity (003; "
-                      "mixtures docs/derivations/viscosity.md)");
+    applies.push_back(
+        "uniform shear flow, hard spheres: first-Sonine Navier-Stokes shear viscosity (003; "
+        "mixtures docs/derivations/viscosity.md)");
     j["viscosity"] = v;
   }
   j["applies"] = applies;

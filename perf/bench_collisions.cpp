@@ -4,8 +4,8 @@
 // Gas: one species of inelastic hard spheres, alpha = 0.8, n = sigma = m = 1, Maxwellian start at T = 1,
 // initial majorant as Dsmc's (majorant_bound: a bound on the mean of omega_kl over sigma-hat, a quarter of
 // 4 pi sigma^2 n (2 max |c|)); the naive reference keeps the paper's form, sigma-hat first with the
-// majorant 4 pi sigma^2 n (2 max |c|), so granmc accepts about four times more of its candidates. Each benchmark iteration runs a
-// fixed number of candidate pairs (kCandidatesPerIteration); granmc advances state.step after each, so
+// majorant 4 pi sigma^2 n (2 max |c|), so granmc accepts about four times more of its candidates. Each benchmark
+// iteration runs a fixed number of candidate pairs (kCandidatesPerIteration); granmc advances state.step after each, so
 // every iteration draws fresh Philox blocks. The gas cools as it collides; as Dsmc does, the velocities
 // are rescaled to unit temperature whenever the tracked energy has fallen by a factor 1.25 (outside the
 // timed region, same rule for both), so the acceptance ratio stays that of a running simulation.
@@ -17,7 +17,7 @@
 // Two more benchmarks time the random draws of a candidate alone (no particle memory), to show where
 // the time goes. After the runs, a table of the median figures and the ratios granmc / naive is printed.
 // Defaults: 3 repetitions, aggregates only, min time 1 s; any --benchmark_* flag overrides them.
-#include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -26,12 +26,12 @@
 #include <cstdio>
 #include <memory>
 #include <numbers>
-#include <span>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
+#include <benchmark/benchmark.h>
 
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
@@ -163,8 +163,7 @@ void granmc_stage(benchmark::State& bs) {
 // ---- naive reference -----------------------------------------------------------------------------
 
 struct NaiveGas {
-  explicit NaiveGas(std::int64_t n)
-      : dsmc(static_cast<std::size_t>(n), kSeed, 1.0, kRestitution, 1.0, 1.0) {
+  explicit NaiveGas(std::int64_t n) : dsmc(static_cast<std::size_t>(n), kSeed, 1.0, kRestitution, 1.0, 1.0) {
     rescale();
   }
   /// As GranmcGas::rescale.
@@ -295,8 +294,9 @@ void print_ratio_table(const perf::RecordingReporter& rep) {
   if (granmc != rep.counters.end() && rep.counters.count("naive_collide")) {
     std::printf("\nCollision stage, alpha = %.1f, %llu candidates per iteration (median of the repetitions)\n",
                 kRestitution, static_cast<unsigned long long>(kCandidatesPerIteration));
-    std::printf("| N | granmc candidates/s | naive candidates/s | ratio | granmc collisions/s | "
-                "naive collisions/s | ratio | acceptance granmc / naive | limit pairs/s | granmc / limit |\n");
+    std::printf(
+        "| N | granmc candidates/s | naive candidates/s | ratio | granmc collisions/s | "
+        "naive collisions/s | ratio | acceptance granmc / naive | limit pairs/s | granmc / limit |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
     for (const auto& [args, unused] : granmc->second) {
       const auto g = [&](const char* c) { return rep.value("granmc_collide", args, c); };
@@ -307,14 +307,16 @@ void print_ratio_table(const perf::RecordingReporter& rep) {
                   n("collisions/s"), g("collisions/s") / n("collisions/s"), g("acceptance"), n("acceptance"), limit,
                   g("candidates/s") / limit);
     }
-    std::printf("(limit: random pair gather + scatter of packed records with prefetch, nothing else; issue 10 "
-                "target granmc / limit >= 0.5)\n");
+    std::printf(
+        "(limit: random pair gather + scatter of packed records with prefetch, nothing else; issue 10 "
+        "target granmc / limit >= 0.5)\n");
   }
   const double a = rep.value("granmc_draws", "", "candidates/s"), b = rep.value("naive_draws", "", "candidates/s");
   if (!std::isnan(a) && !std::isnan(b)) {
-    std::printf("\nRandom draws alone (no particle memory): granmc %.3g candidates/s (%.1f ns each), "
-                "naive %.3g candidates/s (%.1f ns each), ratio %.2f\n",
-                a, 1e9 / a, b, 1e9 / b, a / b);
+    std::printf(
+        "\nRandom draws alone (no particle memory): granmc %.3g candidates/s (%.1f ns each), "
+        "naive %.3g candidates/s (%.1f ns each), ratio %.2f\n",
+        a, 1e9 / a, b, 1e9 / b, a / b);
   }
 }
 

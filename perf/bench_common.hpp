@@ -2,12 +2,12 @@
 // What every granmc benchmark program shares: default flags that the user's flags override, and a console
 // reporter that remembers each benchmark's counters (the median when there are repetitions) for the ratio
 // tables printed after the runs.
-#include <benchmark/benchmark.h>
-
 #include <cmath>
 #include <map>
 #include <string>
 #include <vector>
+
+#include <benchmark/benchmark.h>
 
 namespace granmc::perf {
 

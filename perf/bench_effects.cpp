@@ -44,7 +44,6 @@
 // random interleaving of the repetitions (the gases stay alive, so this costs no rebuilding); any
 // --benchmark_* flag overrides them. About 90 s on the project machine (2 vCPUs); nine gases of 32 MB each.
 // Without the plain benchmark (e.g. --benchmark_filter=hand) the ratios print as nan.
-#include <benchmark/benchmark.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -62,23 +61,25 @@
 #include <tuple>
 #include <vector>
 
+#include <benchmark/benchmark.h>
+
+#include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/maxwell_pseudomolecules.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
-#include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/effects/bgk_relaxation.hpp"
 #include "kernel/effects/gaussian_thermostat.hpp"
 #include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/effects/white_noise.hpp"
 #include "kernel/schemes/collision_stage.hpp"
-#include "kernel/setup/explain.hpp"
-#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/dsmc.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
+#include "kernel/setup/explain.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/sonine.hpp"
 #include "perf/bench_common.hpp"
 #include "perf/hand_specialised_hcs.hpp"
@@ -293,8 +294,9 @@ const std::vector<SceneBench>& scene_benches() {
       {"enskog_shear", enskog_shear_scene,
        [] {
          return std::make_unique<DsmcGas<HardSphere, LagrangianShear, EnskogShearShift>>(
-             enskog_shear_scene(),
-             [](const Scene& s) { return std::tuple{LagrangianShear{s.shear_rate, species_masses(s)}, EnskogShearShift{s.shear_rate}}; });
+             enskog_shear_scene(), [](const Scene& s) {
+               return std::tuple{LagrangianShear{s.shear_rate, species_masses(s)}, EnskogShearShift{s.shear_rate}};
+             });
        }},
       {"relaxation", relaxation_scene,
        [] {
@@ -506,7 +508,8 @@ void print_table(const perf::RecordingReporter& rep) {
     const double t = v(b.name, "time/cand");
     if (std::isnan(t)) continue;
     const double per_step = x(b.name, "cand/step"), acc = x(b.name, "acceptance");
-    const std::string inst = b.scene ? instantiation_name(make_plan(b.scene()), b.scene()) : std::string("perf/hand_specialised_hcs.hpp");
+    const std::string inst =
+        b.scene ? instantiation_name(make_plan(b.scene()), b.scene()) : std::string("perf/hand_specialised_hcs.hpp");
     std::printf("| %s | %s | %.1f | %.3f | %.0f | %.4f | %.0f | %.1f | %+.2f |\n", b.name, inst.c_str(), t, t / plain,
                 per_step, acc, t / acc, x(b.name, "rescales/kstep"), (t - plain) * per_step / n);
   }
@@ -516,7 +519,8 @@ void print_table(const perf::RecordingReporter& rep) {
   if (!std::isnan(plain) && paired_rounds > 0) {
     std::printf(
         "\nPaired: each scene against plain, %d rounds of one step of each back to back (CPU time of this "
-        "thread); median ratio and its 95 %% confidence interval\n| scene | ratio to plain | 95 %% CI |\n|---|---|---|\n",
+        "thread); median ratio and its 95 %% confidence interval\n| scene | ratio to plain | 95 %% CI "
+        "|\n|---|---|---|\n",
         paired_rounds);
     const SceneBench& plain_bench = scene_benches().front();
     for (const SceneBench& b : scene_benches()) {

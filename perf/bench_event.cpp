@@ -31,7 +31,7 @@
 // (perf/gather_scatter_limit.hpp, 10^6 pairs per iteration, pairs/s), run after the event benchmarks of the
 // same N, so that event_<kernel>_over_packed_limit comes from one run. A table of the medians follows.
 // Defaults: 3 repetitions, aggregates only, min time 0.5 s; any --benchmark_* flag overrides them.
-#include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +42,7 @@
 #include <numbers>
 #include <string>
 
-#include <unistd.h>
+#include <benchmark/benchmark.h>
 
 #include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/core/scene.hpp"

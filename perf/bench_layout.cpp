@@ -14,7 +14,7 @@
 //
 // Counter (rate over CPU time): pairs/s. A table of the medians and the ratios follows the runs.
 // Defaults: 3 repetitions, aggregates only, min time 0.5 s; any --benchmark_* flag overrides them.
-#include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
+#include <benchmark/benchmark.h>
 
 #include "kernel/core/aligned_buffer.hpp"
 #include "perf/bench_common.hpp"
@@ -69,7 +69,7 @@ struct SoaLayout {
 template <class Layout, bool prefetched>
 void layout_pairs(benchmark::State& bs) {
   Layout& lay = layout_for<Layout>(static_cast<std::size_t>(bs.range(0)));  // gather_scatter_limit.hpp
-  SplitMix64 gen{0x5EEDull};  // the same pair sequence for every layout
+  SplitMix64 gen{0x5EEDull};                                                // the same pair sequence for every layout
   std::uint64_t pairs = 0;
   for (auto _ : bs) {
     if constexpr (prefetched) {
@@ -88,8 +88,9 @@ void layout_pairs(benchmark::State& bs) {
 void print_ratio_table(const granmc::perf::RecordingReporter& rep) {
   std::printf("\nRandom pair gather + scatter, %llu pairs per iteration (median of the repetitions)\n",
               static_cast<unsigned long long>(kPairsPerIteration));
-  std::printf("| N | SoA pairs/s | packed pairs/s | packed / SoA | SoA+prefetch pairs/s | "
-              "packed+prefetch pairs/s | packed+prefetch / packed | float packed+prefetch pairs/s | float / double |\n");
+  std::printf(
+      "| N | SoA pairs/s | packed pairs/s | packed / SoA | SoA+prefetch pairs/s | "
+      "packed+prefetch pairs/s | packed+prefetch / packed | float packed+prefetch pairs/s | float / double |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   const auto soa_runs = rep.counters.find("layout_soa");
   if (soa_runs == rep.counters.end()) return;

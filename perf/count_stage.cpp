@@ -43,7 +43,8 @@ __attribute__((noinline)) void count_library(GasState& state, const std::vector<
 
 __attribute__((noinline)) void count_hand(perf::HandRecord* v, std::size_t n, double& omega_max,
                                           const RandomStream& rng, const perf::HandConstants& c) {
-  for (int s = 0; s < kSteps; ++s) perf::hand_collide(v, n, omega_max, kCandidates, rng, static_cast<std::uint64_t>(s), c);
+  for (int s = 0; s < kSteps; ++s)
+    perf::hand_collide(v, n, omega_max, kCandidates, rng, static_cast<std::uint64_t>(s), c);
 }
 
 }  // namespace

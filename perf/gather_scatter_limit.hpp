@@ -11,11 +11,11 @@
 // elastic collision along the direction (g.s, then v_k -= (g.s) s, v_l += (g.s) s: energy-conserving, so
 // the values stay normal over any number of iterations), write both back. The buffer is granmc's
 // AlignedBuffer (2 MiB alignment and MADV_HUGEPAGE for large buffers), as SpeciesStore's.
-#include <benchmark/benchmark.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+
+#include <benchmark/benchmark.h>
 
 #include "kernel/core/aligned_buffer.hpp"
 
@@ -51,10 +51,10 @@ struct Direction {
 };
 // The 8 unit vectors (+-1, +-1, +-1) / sqrt(3).
 constexpr double kInvSqrt3 = 0.57735026918962576451;
-constexpr Direction kDirections[8] = {
-    {kInvSqrt3, kInvSqrt3, kInvSqrt3},   {kInvSqrt3, kInvSqrt3, -kInvSqrt3},   {kInvSqrt3, -kInvSqrt3, kInvSqrt3},
-    {kInvSqrt3, -kInvSqrt3, -kInvSqrt3}, {-kInvSqrt3, kInvSqrt3, kInvSqrt3},   {-kInvSqrt3, kInvSqrt3, -kInvSqrt3},
-    {-kInvSqrt3, -kInvSqrt3, kInvSqrt3}, {-kInvSqrt3, -kInvSqrt3, -kInvSqrt3}};
+constexpr Direction kDirections[8] = {{kInvSqrt3, kInvSqrt3, kInvSqrt3},   {kInvSqrt3, kInvSqrt3, -kInvSqrt3},
+                                      {kInvSqrt3, -kInvSqrt3, kInvSqrt3},  {kInvSqrt3, -kInvSqrt3, -kInvSqrt3},
+                                      {-kInvSqrt3, kInvSqrt3, kInvSqrt3},  {-kInvSqrt3, kInvSqrt3, -kInvSqrt3},
+                                      {-kInvSqrt3, -kInvSqrt3, kInvSqrt3}, {-kInvSqrt3, -kInvSqrt3, -kInvSqrt3}};
 
 inline double initial_value(SplitMix64& gen) noexcept {
   return static_cast<double>(gen.next() >> 11) * 0x1p-52 - 1.0;  // uniform on [-1, 1)

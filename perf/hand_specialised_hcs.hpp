@@ -128,7 +128,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
       seen.fill(0);
       stamp = 1;
     }
-    std::uint64_t shared = 0;  // bit b: candidate b shares a particle (or a slot) with an earlier one
+    std::uint64_t shared = 0;                // bit b: candidate b shares a particle (or a slot) with an earlier one
     for (std::uint64_t b = 0; b < m; ++b) {  // the screen
       if (b < m_next) {
         __builtin_prefetch(v + next.ks[b], 1, 3);
@@ -145,9 +145,9 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
     }
     std::uint64_t passes = 0;  // threshold against omega_hi lane by lane, the outcomes as bits
     for (std::uint64_t k = 0; k < batch; k += SimdDouble::size)
-      passes |= not_greater_bits(SimdDouble::load_unaligned(&d.accept[k]) * majorant,
-                                 prefactor * (0.25 * xsimd::sqrt(SimdDouble::load_unaligned(&g2s[k]))) *
-                                     (1.0 + rounding_margin))
+      passes |= not_greater_bits(
+                    SimdDouble::load_unaligned(&d.accept[k]) * majorant,
+                    prefactor * (0.25 * xsimd::sqrt(SimdDouble::load_unaligned(&g2s[k]))) * (1.0 + rounding_margin))
                 << k;
     const std::uint64_t full_test = shared | (passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1));
     const std::size_t passed = selected_unit_vectors(full_test, d.dir1, d.dir2, which, sx, sy, sz);
@@ -191,7 +191,7 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
         s = {inverse * hx, inverse * hy, inverse * hz};
         g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
       }
-      if (!(g_sigma > 0.0)) continue;  // g + |g| n = 0: probability zero
+      if (!(g_sigma > 0.0)) continue;                     // g + |g| n = 0: probability zero
       const double h = 0.5 * (one_plus_alpha * g_sigma);  // equal masses: mu = 1/2
       a.x -= h * s.x;                                     // 000 eq. (14)
       a.y -= h * s.y;

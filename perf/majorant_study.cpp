@@ -137,7 +137,9 @@ Count particle_majorants(Gas& gas, double kappa, double epoch) {
   const std::size_t n = gas.size();
   std::vector<double> bound(n);
   double sum = 0.0, largest = 0.0, epoch_end = 0.0, t = 0.0;
-  auto bound_of = [&](std::size_t k) { return gas.far(k) + kappa * std::sqrt(2.0 * kBeta * (epoch_end - gas.last_update(k))); };
+  auto bound_of = [&](std::size_t k) {
+    return gas.far(k) + kappa * std::sqrt(2.0 * kBeta * (epoch_end - gas.last_update(k)));
+  };
   auto new_epoch = [&] {
     epoch_end = std::min(t + epoch, kEnd);
     sum = largest = 0.0;
@@ -150,8 +152,8 @@ Count particle_majorants(Gas& gas, double kappa, double epoch) {
   };
   new_epoch();
   for (;;) {
-    const double next = t - std::log(gas.uniform()) /
-                                (4.0 * std::numbers::pi * kRate * static_cast<double>(n - 1) / static_cast<double>(n) * sum);
+    const double next = t - std::log(gas.uniform()) / (4.0 * std::numbers::pi * kRate * static_cast<double>(n - 1) /
+                                                       static_cast<double>(n) * sum);
     if (next >= epoch_end) {  // memoryless: restart at the epoch's end with the new bounds
       if (epoch_end >= kEnd) break;
       t = epoch_end;
@@ -208,7 +210,8 @@ void time_costs(std::size_t n, double kappa) {
   using Records = granmc::perf::PackedFloatLayout;  // v and, in aux, the last-update time
   Records records(n);
   granmc::perf::SplitMix64 random{7};
-  for (std::size_t k = 0; k < n; ++k) records.r[k].aux = static_cast<float>(0.001 * granmc::perf::initial_value(random));
+  for (std::size_t k = 0; k < n; ++k)
+    records.r[k].aux = static_cast<float>(0.001 * granmc::perf::initial_value(random));
   granmc::AlignedBuffer<float> bound(n);
   const double noise = 2.0 * kBeta, epoch_end = 0.002;
   float largest = 0.0F;
@@ -217,7 +220,8 @@ void time_costs(std::size_t n, double kappa) {
     for (std::size_t k = 0; k < n; ++k) {
       const auto& r = records.r[k];
       const double far = std::sqrt(double{r.v[0]} * r.v[0] + double{r.v[1]} * r.v[1] + double{r.v[2]} * r.v[2]);
-      bound[k] = static_cast<float>(far + kappa * std::sqrt(noise * (epoch_end - r.aux))) * (1.0F + 0x1p-22F);  // rounded up
+      bound[k] =
+          static_cast<float>(far + kappa * std::sqrt(noise * (epoch_end - r.aux))) * (1.0F + 0x1p-22F);  // rounded up
       top = std::max(top, bound[k]);
     }
     largest = top;
@@ -242,9 +246,11 @@ void time_costs(std::size_t n, double kappa) {
     granmc::perf::SplitMix64 gen{0x5EED};
     granmc::perf::run_pairs_prefetched(records, gen, pairs);
   });
-  std::printf("# n = %zu, kappa = %g: ns per particle of the renewal pass, per selection draw, per limit pair\n", n, kappa);
-  std::printf("renewal %.2f  selection %.2f  limit_pair %.2f  (acceptance of the draws on these synthetic records %.3f)\n", 1e9 * renew / n,
-              1e9 * select / draws, 1e9 * limit / pairs, static_cast<double>(accepted) / (5.0 * draws));
+  std::printf("# n = %zu, kappa = %g: ns per particle of the renewal pass, per selection draw, per limit pair\n", n,
+              kappa);
+  std::printf(
+      "renewal %.2f  selection %.2f  limit_pair %.2f  (acceptance of the draws on these synthetic records %.3f)\n",
+      1e9 * renew / n, 1e9 * select / draws, 1e9 * limit / pairs, static_cast<double>(accepted) / (5.0 * draws));
 }
 
 }  // namespace
@@ -254,7 +260,8 @@ int main(int argc, char** argv) {
   std::size_t particles = 100'000, replicas = 2;
   double kappa = 7.0, epoch = 0.001;
   std::uint64_t seed = 100;
-  app.add_option("--particles", particles, "particles per replica")->check(CLI::Range(std::size_t{2}, std::size_t{1} << 32));
+  app.add_option("--particles", particles, "particles per replica")
+      ->check(CLI::Range(std::size_t{2}, std::size_t{1} << 32));
   app.add_option("--replicas", replicas, "replicas, seeds seed, seed + 1, ...")->check(CLI::PositiveNumber);
   app.add_option("--kappa", kappa, "margin of a particle's bound, in standard deviations of its Brownian increment")
       ->check(CLI::NonNegativeNumber);

@@ -96,7 +96,7 @@ class NaiveDsmc {
       }
 
       const double impulse = 0.5 * (1.0 + alpha_) * g_sigma;  // equal masses: mu = 1/2
-      pk.vx -= impulse * sx;  // 000 eq. (14)
+      pk.vx -= impulse * sx;                                  // 000 eq. (14)
       pk.vy -= impulse * sy;
       pk.vz -= impulse * sz;
       pl.vx += impulse * sx;  // 000 eq. (15)

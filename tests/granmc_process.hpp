@@ -3,8 +3,6 @@
 // gets its own empty directory, writes its files there, and runs `LAUNCHER granmc ARGS` in it (LAUNCHER
 // empty or e.g. mpirun), getting the exit status, stdout and stderr. GRANMC_EXECUTABLE is the granmc binary
 // (tests/CMakeLists.txt). The directory is removed after a test that passed and kept after one that failed.
-#include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -12,6 +10,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace granmc_test {
 
@@ -35,8 +35,7 @@ class GranmcDirectory : public ::testing::Test {
   explicit GranmcDirectory(std::string prefix) : prefix_(std::move(prefix)) {}
 
   void SetUp() override {
-    dir_ = fs::path(::testing::TempDir()) /
-           (prefix_ + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::path(::testing::TempDir()) / (prefix_ + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -52,8 +51,8 @@ class GranmcDirectory : public ::testing::Test {
 
   /// Runs `launcher granmc args` in the test directory.
   Outcome granmc(const std::string& args, const std::string& launcher = "") const {
-    const std::string cmd = "cd '" + dir_.string() + "' && " + launcher + " '" GRANMC_EXECUTABLE "' " + args +
-                            " >stdout.txt 2>stderr.txt";
+    const std::string cmd =
+        "cd '" + dir_.string() + "' && " + launcher + " '" GRANMC_EXECUTABLE "' " + args + " >stdout.txt 2>stderr.txt";
     const int raw = std::system(cmd.c_str());
     Outcome o;
     o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -1,13 +1,13 @@
 // Bath laws of the Gillespie intruder (002 eqs. 5-6, 14, 17-19, 23): the closed-form fluxes against
 // quadrature, and the rejection samplers of g_+(v; v1) against the exact law for intruder velocities from
 // the far left tail to the far right tail (Kolmogorov-Smirnov at p = 0.999 and the mean).
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "kernel/collide/bath_gaussian.hpp"
 #include "kernel/collide/bath_power_law.hpp"
@@ -90,7 +90,7 @@ void check_bath(const Bath& bath, const std::function<double(double)>& f, const 
     // Kolmogorov-Smirnov: sup |F_n - F| < 1.95 / sqrt(n) with probability 0.999.
     EXPECT_LT(ks, 1.95 / std::sqrt(n)) << name << " x1 = " << x1;
     EXPECT_GT(acceptance, 0.3) << name << " x1 = " << x1;  // bounded below for every v1: no window, no stall
-    if (std::string(name) == "gaussian") {  // finite variance: the mean within 5 standard errors
+    if (std::string(name) == "gaussian") {                 // finite variance: the mean within 5 standard errors
       double var = 0.0;
       for (double x : w) var += (x - sum / n) * (x - sum / n);
       EXPECT_NEAR(sum / n, law.mean, 5.0 * std::sqrt(var / n / n)) << name << " x1 = " << x1;
@@ -102,28 +102,28 @@ void check_bath(const Bath& bath, const std::function<double(double)>& f, const 
 
 TEST(Bath, GaussianFluxAndExactSampling) {
   const GaussianBath bath{0.7, 1.3};
-  check_bath(bath, [&](double v) { return std::sqrt(bath.a / std::numbers::pi) * std::exp(-bath.a * v * v); },
-             "gaussian", -19.0);
+  check_bath(
+      bath, [&](double v) { return std::sqrt(bath.a / std::numbers::pi) * std::exp(-bath.a * v * v); }, "gaussian",
+      -19.0);
 }
 
 TEST(Bath, PowerLawFluxAndExactSampling) {
   const PowerLawBath bath{1.8, 0.6};
-  check_bath(bath,
-             [&](double v) {
-               return std::sqrt(2.0 * bath.a) / std::numbers::pi / (1.0 + bath.a * bath.a * v * v * v * v);
-             },
-             "power-law", -300.0);
+  check_bath(
+      bath,
+      [&](double v) { return std::sqrt(2.0 * bath.a) / std::numbers::pi / (1.0 + bath.a * bath.a * v * v * v * v); },
+      "power-law", -300.0);
 }
 
 TEST(Bath, FluxesMatchThePaperClosedFormAndSymmetry) {
   // 002 eq. (19)-(20) as printed, and phi_+ + phi_- = phi.
   const GaussianBath g{2.0, 1.5};
   for (double v1 : {-2.0, -0.3, 0.0, 0.8, 3.0}) {
-    const double paper_plus = g.rho / 2.0 *
-                              (v1 + std::exp(-g.a * v1 * v1) / std::sqrt(std::numbers::pi * g.a) +
-                               v1 * std::erf(v1 * std::sqrt(g.a)));
-    const double paper_total = g.rho * (std::exp(-g.a * v1 * v1) / std::sqrt(std::numbers::pi * g.a) +
-                                        v1 * std::erf(v1 * std::sqrt(g.a)));
+    const double paper_plus =
+        g.rho / 2.0 *
+        (v1 + std::exp(-g.a * v1 * v1) / std::sqrt(std::numbers::pi * g.a) + v1 * std::erf(v1 * std::sqrt(g.a)));
+    const double paper_total =
+        g.rho * (std::exp(-g.a * v1 * v1) / std::sqrt(std::numbers::pi * g.a) + v1 * std::erf(v1 * std::sqrt(g.a)));
     EXPECT_NEAR(g.flux_right(v1), paper_plus, 1e-14);
     EXPECT_NEAR(g.flux_right(v1) + g.flux_right(-v1), paper_total, 1e-14);
   }

@@ -1,13 +1,12 @@
 // The command line: a bad scene or bad arguments exit with status 2 before any work, with one message
 // on stderr naming the file and the key, and leave no output file; a good run exits 0 and writes both
 // outputs atomically (SCENES.md, "Command line").
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "tests/granmc_process.hpp"
@@ -29,7 +28,6 @@ class Cli : public granmc_test::GranmcDirectory {
       if (e.path().extension() != ".toml") names.push_back(e.path().filename().string());
     return names;
   }
-
 };
 
 const std::string good_scene = R"([run]
@@ -147,7 +145,11 @@ TEST_F(Cli, BadScenesExitTwoNamingFileAndKeyWithoutOutput) {
       {"unknown_method", with("[run]", "[run]\nmethod = \"leapfrog\""), "run.method"},
       {"broken_toml", "[run\nt_end = 1\n", "line 1"},
       {"empty", "", "empty"},
-      {"binary", std::string("\x7f" "ELF\0\0\x01\x02", 8), "NUL"},
+      {"binary",
+       std::string("\x7f"
+                   "ELF\0\0\x01\x02",
+                   8),
+       "NUL"},
   };
   for (const Case& c : cases) {
     const fs::path scene = write(c.name + ".toml", c.text);
@@ -191,4 +193,3 @@ TEST_F(Cli, SpreadParticlesRunsOrSaysWhatItSupports) {  // docs/scaling.md, "One
       << plan.stdout_text;
   EXPECT_EQ(granmc("run float.toml --spread particles --explain").status, 2);
 }
-

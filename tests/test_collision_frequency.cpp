@@ -3,11 +3,11 @@
 // (000 eq. 2 with a Maxwellian), so a run of length t has N nu t / 2 collisions on average (to O(1/N):
 // the scheme draws 1/2 (N - 1) omega_max dt candidates per step, and the pair mean of |g| is that of
 // the N-particle state; both are 1e-4 effects here, far below the CI).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "kernel/collide/enskog_chi.hpp"
 #include "kernel/observe/replica_statistics.hpp"
@@ -35,8 +35,8 @@ MeanCI collision_count_ratio(double packing_fraction, double chi) {
   for (const ReplicaSeries& rep : r.replicas) {
     const double t0 = rep.temperature.front();
     EXPECT_NEAR(rep.temperature.back() / t0, 1.0, 1e-12);  // elastic: energy conserved to rounding
-    const double nu = 4.0 * std::sqrt(std::numbers::pi) * sp.density * sp.diameter * sp.diameter * chi *
-                      std::sqrt(t0 / sp.mass);
+    const double nu =
+        4.0 * std::sqrt(std::numbers::pi) * sp.density * sp.diameter * sp.diameter * chi * std::sqrt(t0 / sp.mass);
     ratio.push_back(rep.collisions.back() / (0.5 * sp.particles * nu * s.run.t_end));
   }
   return replica_mean(ratio);

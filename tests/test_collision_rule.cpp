@@ -1,12 +1,12 @@
 // The post-collision rule (000 eqs. 14-15) conserves momentum to rounding and loses exactly
 // (1 - alpha^2) m_i m_j / (2 (m_i + m_j)) (g.sigma)^2 of kinetic energy; the impact direction of an
 // accepted pair (collide/impact_direction.hpp) has the density Theta(g.sigma) (g.sigma) / (pi |g|).
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
@@ -74,7 +74,7 @@ TEST(CollisionRule, PairCoefficientsFollowThePaper) {
   EXPECT_EQ(p.j, 1);
   EXPECT_DOUBLE_EQ(p.mu_ji, 0.75);
   EXPECT_DOUBLE_EQ(p.mu_ij, 0.25);
-  EXPECT_DOUBLE_EQ(p.rate_prefactor, 4.0 * M_PI * 1.5 * 1.5 * 0.5);  // 4 pi sigma_12^2 n_2
+  EXPECT_DOUBLE_EQ(p.rate_prefactor, 4.0 * M_PI * 1.5 * 1.5 * 0.5);         // 4 pi sigma_12^2 n_2
   EXPECT_DOUBLE_EQ(pairs[2].rate_prefactor, 4.0 * M_PI * 1.5 * 1.5 * 2.0);  // (1, 0): n_1
   EXPECT_DOUBLE_EQ(p.energy_loss, 0.5 * 0.75 * 3.0 / 4.0);
 }

@@ -98,7 +98,7 @@ TEST(CollisionStage, TheScreenLeavesOutOnlyRejectedCandidatesInALargeGas) {
   // their batch, and their impact directions are computed a register at a time before the batch collides.
   // A mixture and one species (the stage's one-pair form).
   const std::vector<std::vector<SpeciesConfig>> gases{{{"a", 1.0, 1.0, 1.0, 3000}, {"b", 3.0, 1.5, 0.5, 1000}},
-                                                {{"a", 1.0, 1.0, 1.0, 4000}}};
+                                                      {{"a", 1.0, 1.0, 1.0, 4000}}};
   for (const auto& species : gases) {
     Gas screened(species), full(species), one(species);
     screened.run<64>(5);

@@ -3,11 +3,11 @@
 // half-width (001 eq. 31) plus the documented model error of the theory (docs/physics.md, "Model
 // error of the Sonine predictions"). The same scene with float storage (run.storage) cools as the double
 // one does: the paired difference of each replica (same seed) is zero within its CI.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+
+#include <gtest/gtest.h>
 
 #include "kernel/observe/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"
@@ -105,7 +105,7 @@ TEST_F(CoolingState, A2MatchesSonineWithinConfidenceAndModelError) {
               m.ci, theory_->a2, theory_->a2_model_error, theory_->a2_second_sonine);
   EXPECT_NEAR(m.mean, theory_->a2, m.ci + theory_->a2_model_error) << "ci " << m.ci;
   EXPECT_LT(m.ci, 0.5 * std::fabs(theory_->a2));  // resolves a2 from zero
-  EXPECT_LT(m.mean + m.ci, 0.0);                   // negative at alpha = 0.8, as theory says
+  EXPECT_LT(m.mean + m.ci, 0.0);                  // negative at alpha = 0.8, as theory says
 }
 
 TEST_F(CoolingState, FloatStorageCoolsAsDoubleDoes) {

@@ -7,20 +7,20 @@
 //  - hard cases: one particle at 1000 times the thermal speed (energy and momentum conserved to rounding
 //    when elastic and unheated, the majorant grows without a violation); strong heating with lambda = 1;
 //  - the candidates a register at a time: the same bits as one by one.
-#include <gtest/gtest.h>
-
 #include <bit>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <utility>
 
+#include <gtest/gtest.h>
+
 #include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/observe/moments.hpp"
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/event_white_noise.hpp"
 #include "kernel/schemes/initial_state.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/white_noise.hpp"
 
 using namespace granmc;
@@ -120,8 +120,9 @@ TEST(EventScheme, ElasticCollisionRatesAreExactInBothSchemes) {
   // Elastic, no noise: real collisions per unit time 2 pi rate (n - 1) <|u|^lambda>, for the event scheme
   // (001 eqs. 25-26) and for the time-stepped one in the 001 form (prefactor 16 pi rate, N - 1
   // candidates): VHS lambda = 1/2 and hard spheres.
-  for (auto [kernel, method] : {std::pair{CollisionKernel::vhs, Method::event}, std::pair{CollisionKernel::vhs, Method::dsmc},
-                                std::pair{CollisionKernel::hard_sphere, Method::dsmc}}) {
+  for (auto [kernel, method] :
+       {std::pair{CollisionKernel::vhs, Method::event}, std::pair{CollisionKernel::vhs, Method::dsmc},
+        std::pair{CollisionKernel::hard_sphere, Method::dsmc}}) {
     Scene s = example(kernel, 0.0, 20000, 32);
     s.run.method = method;
     s.run.dt = 0.02;
@@ -136,8 +137,8 @@ TEST(EventScheme, ElasticCollisionRatesAreExactInBothSchemes) {
     for (const ReplicaSeries& rep : r.replicas) ratio.push_back(rep.collisions.back() / expected);
     const MeanCI m = replica_mean(ratio);
     EXPECT_NEAR(m.mean, 1.0, m.ci) << method_name(method) << ", lambda = " << s.collision.lambda;
-    std::printf("%s, lambda = %g: collisions / (2 pi rate (n-1) <|u|^lambda> t) = %.5f +- %.5f\n",
-                method_name(method), s.collision.lambda, m.mean, m.ci);
+    std::printf("%s, lambda = %g: collisions / (2 pi rate (n-1) <|u|^lambda> t) = %.5f +- %.5f\n", method_name(method),
+                s.collision.lambda, m.mean, m.ci);
   }
 }
 
@@ -213,9 +214,12 @@ template <class Real>
 void expect_same_store(const BasicSpeciesStore<Real>& a, const BasicSpeciesStore<Real>& b, double t) {
   for (std::size_t k = 0; k < a.size(); ++k) {
     const Vec3 va = a.velocity(k), vb = b.velocity(k);
-    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.x), std::bit_cast<std::uint64_t>(vb.x)) << "particle " << k << " at t = " << t;
-    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.y), std::bit_cast<std::uint64_t>(vb.y)) << "particle " << k << " at t = " << t;
-    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.z), std::bit_cast<std::uint64_t>(vb.z)) << "particle " << k << " at t = " << t;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.x), std::bit_cast<std::uint64_t>(vb.x))
+        << "particle " << k << " at t = " << t;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.y), std::bit_cast<std::uint64_t>(vb.y))
+        << "particle " << k << " at t = " << t;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(va.z), std::bit_cast<std::uint64_t>(vb.z))
+        << "particle " << k << " at t = " << t;
     ASSERT_EQ(std::bit_cast<std::uint64_t>(a.last_update(k)), std::bit_cast<std::uint64_t>(b.last_update(k)));
   }
 }

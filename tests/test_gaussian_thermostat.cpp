@@ -1,10 +1,10 @@
 // The Gaussian thermostat (000 eqs. 8, 16): exact exponential heating with a fixed zeta, exact
 // compensation of the collisional cooling with zeta = "cooling-rate", and the heated steady state (HSS)
 // equal to the cooling state (HCS) in scaled variables (000 sec. 2), mixtures included.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
+
+#include <gtest/gtest.h>
 
 #include "kernel/observe/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"

@@ -1,17 +1,17 @@
 // The Gillespie intruder in 1D (002 sec. 3.1) against its exact results: T/T_B = (1 + alpha) /
 // (2 + (1 - alpha)/M) with a Gaussian velocity law in a Gaussian bath (002 eq. 22, Martin and Piasecki),
 // and, in the power-law bath with M = alpha, the intruder's law equal to the bath's (T = alpha T_B).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 
+#include <gtest/gtest.h>
+
 #include "kernel/collide/bath_power_law.hpp"
 #include "kernel/observe/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"
-#include "tests/intruder_averages.hpp"
 #include "kernel/theory/intruder.hpp"
+#include "tests/intruder_averages.hpp"
 
 using namespace granmc;
 using granmc::testing::velocity_average;

@@ -4,21 +4,21 @@
 // and the Gaussian grid runs at dt from 0.01 to 10 mean free times to show it. 64 replicas: the CI's variance
 // is then estimated to about 18% (sqrt(2 / 63)), and 3.2 is the 0.998 two-sided quantile of Student's t with 63
 // degrees of freedom, so each check is a ~0.998 test.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <numbers>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "kernel/collide/bath_gaussian.hpp"
 #include "kernel/collide/bath_power_law.hpp"
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/setup/run_scene.hpp"
-#include "tests/intruder_averages.hpp"
 #include "kernel/schemes/intruder_dsmc_1d.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/intruder.hpp"
+#include "tests/intruder_averages.hpp"
 
 using namespace granmc;
 using granmc::testing::velocity_average;
@@ -48,7 +48,8 @@ Scene intruder_scene(BathKind bath, double mass, double alpha, double t_end, dou
 RunResult run_dsmc_intruder(const Scene& s, const RunOptions& options = {}) { return run_scene(s, options); }
 
 /// Power law in x = sqrt(a) v: P(|x| < X) = (2 sqrt 2 / pi) A(X), and
-/// int_{|x| < X} x^2 f = (2 sqrt 2 / pi) B(X), B(X) = int_0^X t^2 / (1 + t^4) dt = (atan(sqrt2 X + 1) + atan(sqrt2 X - 1)) / sqrt 2 - A(X).
+/// int_{|x| < X} x^2 f = (2 sqrt 2 / pi) B(X), B(X) = int_0^X t^2 / (1 + t^4) dt = (atan(sqrt2 X + 1) + atan(sqrt2 X -
+/// 1)) / sqrt 2 - A(X).
 double power_law_probability(double x) {
   return 2.0 * std::numbers::sqrt2 / std::numbers::pi * PowerLawBath::quartic_integral(x);
 }
@@ -99,19 +100,22 @@ TEST(IntruderDsmc, CandidateVelocityLawsAreExact) {
   const PowerLawBath power;
   constexpr double r2 = std::numbers::sqrt2, pi = std::numbers::pi;
   // Var |x| = <x^2> - <|x|>^2: 1/2 - 1/pi (Gaussian), 1 - 1/2 (power law, <x^2> = a <v^2> = 1).
-  const double gauss_mean = check("Gaussian f", [&](std::uint64_t i) { return law(gauss, i); },
-                                  [](double q) { return 0.5 * std::erfc(-q); });
+  const double gauss_mean = check(
+      "Gaussian f", [&](std::uint64_t i) { return law(gauss, i); }, [](double q) { return 0.5 * std::erfc(-q); });
   EXPECT_NEAR(gauss_mean, intruder_dsmc::mean_speed(gauss), confidence_lambda_p * std::sqrt((0.5 - 1.0 / pi) / n));
-  check("Gaussian |x| f", [&](std::uint64_t i) { return signed_size_biased(gauss, i); },
-        [](double q) { return 0.5 + std::copysign(0.5 * (1.0 - std::exp(-q * q)), q); });
+  check(
+      "Gaussian |x| f", [&](std::uint64_t i) { return signed_size_biased(gauss, i); },
+      [](double q) { return 0.5 + std::copysign(0.5 * (1.0 - std::exp(-q * q)), q); });
   attempts = 0;
-  const double power_mean = check("power-law f", [&](std::uint64_t i) { return law(power, i); },
-                                  [&](double q) { return 0.5 + r2 / pi * PowerLawBath::quartic_integral(q); });
+  const double power_mean = check(
+      "power-law f", [&](std::uint64_t i) { return law(power, i); },
+      [&](double q) { return 0.5 + r2 / pi * PowerLawBath::quartic_integral(q); });
   EXPECT_NEAR(power_mean, intruder_dsmc::mean_speed(power), confidence_lambda_p * std::sqrt(0.5 / n));
   const double acceptance = static_cast<double>(n) / static_cast<double>(attempts);
   EXPECT_NEAR(acceptance, pi / 4.0, confidence_lambda_p * std::sqrt(pi / 4.0 * (1.0 - pi / 4.0) / attempts));
-  check("power-law |x| f", [&](std::uint64_t i) { return signed_size_biased(power, i); },
-        [&](double q) { return 0.5 + std::copysign(std::atan(q * q) / pi, q); });
+  check(
+      "power-law |x| f", [&](std::uint64_t i) { return signed_size_biased(power, i); },
+      [&](double q) { return 0.5 + std::copysign(std::atan(q * q) / pi, q); });
 }
 
 TEST(IntruderDsmc, GaussianBathTemperatureRatioIsExact) {
@@ -122,9 +126,9 @@ TEST(IntruderDsmc, GaussianBathTemperatureRatioIsExact) {
   };
   // (M = 1e3, alpha = 1 would cost as much again as each M = 1e3 case: elasticity is checked at M = 1e-3 and 1.)
   const Case cases[] = {
-      {1e-3, 0.0, 5000.0, 1.0, 0.01},   {1e-3, 0.5, 5000.0, 1.0, 0.1}, {1e-3, 1.0, 6000.0, 1.0, 1.0},
-      {1.0, 0.0, 5000.0, 1.0, 10.0},    {1.0, 0.5, 5000.0, 1.0, 0.01}, {1.0, 1.0, 5000.0, 1.0, 1.0},
-      {1e3, 0.0, 200000.0, 10.0, 0.1},  {1e3, 0.5, 150000.0, 10.0, 10.0},
+      {1e-3, 0.0, 5000.0, 1.0, 0.01},  {1e-3, 0.5, 5000.0, 1.0, 0.1},    {1e-3, 1.0, 6000.0, 1.0, 1.0},
+      {1.0, 0.0, 5000.0, 1.0, 10.0},   {1.0, 0.5, 5000.0, 1.0, 0.01},    {1.0, 1.0, 5000.0, 1.0, 1.0},
+      {1e3, 0.0, 200000.0, 10.0, 0.1}, {1e3, 0.5, 150000.0, 10.0, 10.0},
   };
   for (const Case& c : cases) {
     const Scene s = intruder_scene(BathKind::gaussian, c.mass, c.alpha, c.t_end, c.dt, c.spacing);
@@ -155,8 +159,9 @@ TEST(IntruderDsmc, PowerLawBathWithMassEqualToAlphaGivesTheBathLaw) {
     const MeanCI p = velocity_average(r, [&](double v) { return std::fabs(v) < c ? 1.0 : 0.0; });
     const MeanCI t = velocity_average(r, [&](double v) { return std::fabs(v) < c ? alpha * v * v / tb : 0.0; });
     const double t_exact = alpha * power_law_truncated_second_moment(x);
-    std::printf("[ measured ] c = %4.1f: P(|v| < c) = %.4f +- %.4f, exact %.4f; truncated T/T_B = %.4f +- %.4f, exact %.4f\n",
-                c, p.mean, p.ci, power_law_probability(x), t.mean, t.ci, t_exact);
+    std::printf(
+        "[ measured ] c = %4.1f: P(|v| < c) = %.4f +- %.4f, exact %.4f; truncated T/T_B = %.4f +- %.4f, exact %.4f\n",
+        c, p.mean, p.ci, power_law_probability(x), t.mean, t.ci, t_exact);
     EXPECT_NEAR(p.mean, power_law_probability(x), p.ci) << "c = " << c;
     EXPECT_NEAR(t.mean, t_exact, t.ci) << "c = " << c;
   }
@@ -187,9 +192,10 @@ TEST(IntruderDsmc, AgreesWithGillespie) {
       auto temp = [&](double v) { return std::fabs(v) < c ? v * v / tb_power : 0.0; };
       const MeanCI pd = velocity_average(dsmc, prob), pg = velocity_average(gillespie, prob);
       const MeanCI td = velocity_average(dsmc, temp), tg = velocity_average(gillespie, temp);
-      std::printf("[ measured ] power-law bath, c = %.1f: P(|v| < c) DSMC %.4f +- %.4f, Gillespie %.4f +- %.4f; "
-                  "truncated T/T_B DSMC %.4f +- %.4f, Gillespie %.4f +- %.4f\n",
-                  c, pd.mean, pd.ci, pg.mean, pg.ci, td.mean, td.ci, tg.mean, tg.ci);
+      std::printf(
+          "[ measured ] power-law bath, c = %.1f: P(|v| < c) DSMC %.4f +- %.4f, Gillespie %.4f +- %.4f; "
+          "truncated T/T_B DSMC %.4f +- %.4f, Gillespie %.4f +- %.4f\n",
+          c, pd.mean, pd.ci, pg.mean, pg.ci, td.mean, td.ci, tg.mean, tg.ci);
       EXPECT_NEAR(pd.mean, pg.mean, combined_ci(pd, pg)) << "c = " << c;
       EXPECT_NEAR(td.mean, tg.mean, combined_ci(td, tg)) << "c = " << c;
     }
@@ -202,8 +208,9 @@ TEST(IntruderDsmc, OutputsAreFiniteInTheHardCases) {
     double mass, alpha, dt;
   };
   const Case cases[] = {
-      {BathKind::gaussian, 1e-3, 0.0, 1e-3}, {BathKind::gaussian, 1e3, 0.0, 1e3},  {BathKind::gaussian, 1e-3, 1.0, 1e3},
-      {BathKind::power_law, 1e-3, 0.0, 1e-3}, {BathKind::power_law, 1e-3, 1.0, 1e3}, {BathKind::power_law, 1e3, 0.0, 0.1},
+      {BathKind::gaussian, 1e-3, 0.0, 1e-3}, {BathKind::gaussian, 1e3, 0.0, 1e3},
+      {BathKind::gaussian, 1e-3, 1.0, 1e3},  {BathKind::power_law, 1e-3, 0.0, 1e-3},
+      {BathKind::power_law, 1e-3, 1.0, 1e3}, {BathKind::power_law, 1e3, 0.0, 0.1},
   };
   for (const Case& c : cases) {
     Scene s = intruder_scene(c.bath, c.mass, c.alpha, 2000.0, c.dt, 1.0);

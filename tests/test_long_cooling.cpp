@@ -2,10 +2,10 @@
 // velocities are rescaled and the centre-of-mass velocity removed as the gas cools (DESIGN.md,
 // "Numerics that must not break"), so the scaled state late in the run is the same homogeneous cooling
 // state as early in the run.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
+
+#include <gtest/gtest.h>
 
 #include "kernel/observe/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"
@@ -89,8 +89,9 @@ TEST_F(LongCooling, LateScaledStateEqualsEarlyScaledState) {
   for (std::size_t r = 0; r < early.size(); ++r) difference.push_back(late[r] - early[r]);
   const MeanCI d = replica_mean(difference);
   const MeanCI early_a2 = replica_mean(early);
-  std::printf("[ measured ] a2 after 2-6 decades %.4f +- %.4f, after 35-40 decades %.4f +- %.4f, difference %.4f +- %.4f\n",
-              early_a2.mean, early_a2.ci, replica_mean(late).mean, replica_mean(late).ci, d.mean, d.ci);
+  std::printf(
+      "[ measured ] a2 after 2-6 decades %.4f +- %.4f, after 35-40 decades %.4f +- %.4f, difference %.4f +- %.4f\n",
+      early_a2.mean, early_a2.ci, replica_mean(late).mean, replica_mean(late).ci, d.mean, d.ci);
   EXPECT_NEAR(d.mean, 0.0, d.ci) << "a2 late - a2 early";
   const MeanCI late_a2 = replica_mean(late);
   EXPECT_LT(late_a2.ci, 0.02);  // the comparison can see a change of the order of a2 itself

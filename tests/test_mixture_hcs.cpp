@@ -1,10 +1,10 @@
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cmath>
 #include <initializer_list>
 #include <numbers>
 #include <random>
+
+#include <gtest/gtest.h>
 
 #include "kernel/theory/mixture_hcs.hpp"
 #include "kernel/theory/sonine.hpp"

@@ -1,11 +1,11 @@
 // Hard cases of the time-stepped scheme stay numerically stable (issue: mixtures, item 7): mass ratios
 // 1e-3 and 1e3, alpha = 0, packing fraction 0.5. Each runs to the end with finite results, total momentum
 // conserved to rounding, and majorants that stay bounded.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+
+#include <gtest/gtest.h>
 
 #include "kernel/setup/run_scene.hpp"
 
@@ -46,10 +46,12 @@ void expect_stable(const Scene& scene, const char* what) {
     // The majorant is an estimate that grows when exceeded (000 sec. 3); in these states it must not run
     // away (it is held in units of the thermal speed).
     for (double growth : rep.majorant_growth) EXPECT_LT(growth, 4.0) << what;
-    std::printf("[ measured ] %s: %g collisions, %lu majorant updates, largest growth %.3f, |P| rel %.2g, "
-                "energy residual %.2g\n", what, rep.collisions.back(), static_cast<unsigned long>(rep.majorant_updates),
-                *std::max_element(rep.majorant_growth.begin(), rep.majorant_growth.end()),
-                rep.momentum_relative.back(), *rep.energy_residual);
+    std::printf(
+        "[ measured ] %s: %g collisions, %lu majorant updates, largest growth %.3f, |P| rel %.2g, "
+        "energy residual %.2g\n",
+        what, rep.collisions.back(), static_cast<unsigned long>(rep.majorant_updates),
+        *std::max_element(rep.majorant_growth.begin(), rep.majorant_growth.end()), rep.momentum_relative.back(),
+        *rep.energy_residual);
   }
 }
 

@@ -1,8 +1,8 @@
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <random>
+
+#include <gtest/gtest.h>
 
 #include "kernel/theory/mixture_hcs.hpp"
 #include "kernel/theory/mixture_viscosity.hpp"
@@ -43,7 +43,8 @@ double sigma_ij(const MixtureParameters& mp, int i, int j) { return 0.5 * (mp.di
 //   kappa = (4/9) sum_ij n_i n_j sigma_ij^4 chi_ij sqrt(2 pi m_ij),
 // n_i the densities of the Enskog terms (zero: the dilute gas).
 double thorne_elastic(const MixtureParameters& mp, const double n[2]) {
-  const double x[2] = {mp.density[0] / (mp.density[0] + mp.density[1]), mp.density[1] / (mp.density[0] + mp.density[1])};
+  const double x[2] = {mp.density[0] / (mp.density[0] + mp.density[1]),
+                       mp.density[1] / (mp.density[0] + mp.density[1])};
   auto m_ij = [&](int i, int j) { return mp.mass[i] * mp.mass[j] / (mp.mass[i] + mp.mass[j]); };
   auto eta_ij = [&](int i, int j) {
     return 5.0 / 16.0 * std::sqrt(2.0 * pi * m_ij(i, j)) / (pi * std::pow(sigma_ij(mp, i, j), 2) * mp.chi[i][j]);
@@ -64,7 +65,8 @@ double thorne_elastic(const MixtureParameters& mp, const double n[2]) {
   double kappa = 0.0;
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j)
-      kappa += 4.0 / 9.0 * n[i] * n[j] * std::pow(sigma_ij(mp, i, j), 4) * mp.chi[i][j] * std::sqrt(2.0 * pi * m_ij(i, j));
+      kappa +=
+          4.0 / 9.0 * n[i] * n[j] * std::pow(sigma_ij(mp, i, j), 4) * mp.chi[i][j] * std::sqrt(2.0 * pi * m_ij(i, j));
   return y[0] * z0 + y[1] * z1 + 0.6 * kappa;
 }
 
@@ -85,7 +87,8 @@ TEST(MixtureViscosityTheory, IdenticalSpeciesGiveTheOneSpeciesTheory) {
           const MixtureSonine state = mixture_first_sonine(mp);
           const MixtureShearViscosity e = mixture_shear_viscosity(mp, phi, state, 1.0, r);
           const ShearViscosity one = shear_viscosity(alpha, phi, r);
-          EXPECT_NEAR(e.kinetic / eta0, one.kinetic, 1e-12 * std::abs(one.kinetic)) << alpha << " " << phi << " " << delta;
+          EXPECT_NEAR(e.kinetic / eta0, one.kinetic, 1e-12 * std::abs(one.kinetic))
+              << alpha << " " << phi << " " << delta;
           EXPECT_NEAR(e.total / eta0, one.total, 1e-12 * one.total) << alpha << " " << phi << " " << delta;
           EXPECT_NEAR(e.partial[0] / e.kinetic, delta / (1.0 + delta), 1e-12);
         }
@@ -134,7 +137,8 @@ TEST(MixtureViscosityTheory, RelabellingTheSpeciesChangesNothing) {
     }
     const MixtureSonine s = mixture_first_sonine(mp), t{1.0 / s.gamma, {s.a2[1], s.a2[0]}};
     for (ViscosityReference r : {kCooling, kThermostat}) {
-      const MixtureShearViscosity a = mixture_shear_viscosity(mp, 0.2, s, 1.3, r), b = mixture_shear_viscosity(sw, 0.2, t, 1.3, r);
+      const MixtureShearViscosity a = mixture_shear_viscosity(mp, 0.2, s, 1.3, r),
+                                  b = mixture_shear_viscosity(sw, 0.2, t, 1.3, r);
       EXPECT_NEAR(a.total, b.total, 1e-12 * a.total);
       EXPECT_NEAR(a.partial[0], b.partial[1], 1e-12 * a.kinetic);
       EXPECT_NEAR(a.gradient, b.gradient, 1e-12 * a.total);
@@ -159,9 +163,11 @@ TEST(MixtureViscosityTheory, Figure11ThresholdDensityNearTwentyTwoHundredths) {
   // alpha = 0.9 to 0.7 (0.150 to 0.155 for the cooling-state coefficient, which 000 does not use).
   for (double alpha : {0.9, 0.8, 0.7}) {
     EXPECT_GT(mixture_viscosity_from_ratios(4.0, 1.0, 1.0, alpha, 0.21, kThermostat).star,
-              mixture_viscosity_from_ratios(4.0, 1.0, 1.0, 1.0, 0.21, kThermostat).star) << alpha;
+              mixture_viscosity_from_ratios(4.0, 1.0, 1.0, 1.0, 0.21, kThermostat).star)
+        << alpha;
     EXPECT_LT(mixture_viscosity_from_ratios(4.0, 1.0, 1.0, alpha, 0.23, kThermostat).star,
-              mixture_viscosity_from_ratios(4.0, 1.0, 1.0, 1.0, 0.23, kThermostat).star) << alpha;
+              mixture_viscosity_from_ratios(4.0, 1.0, 1.0, 1.0, 0.23, kThermostat).star)
+        << alpha;
   }
 }
 
@@ -185,7 +191,8 @@ TEST(MixtureViscosityTheory, Figure7GrowsWithMassDisparity) {
     for (double mu : {1.0, 2.0, 4.0, 6.0, 8.0, 10.0}) {
       const double r = mixture_viscosity_from_ratios(mu, 1.0, 1.0, alpha, 0.0, kThermostat).over_elastic;
       EXPECT_GT(r, prev) << alpha << " " << mu;
-      EXPECT_NEAR(r, mixture_viscosity_from_ratios(1.0 / mu, 1.0, 1.0, alpha, 0.0, kThermostat).over_elastic, 1e-10 * r);
+      EXPECT_NEAR(r, mixture_viscosity_from_ratios(1.0 / mu, 1.0, 1.0, alpha, 0.0, kThermostat).over_elastic,
+                  1e-10 * r);
       prev = r;
     }
   }
@@ -193,9 +200,11 @@ TEST(MixtureViscosityTheory, Figure7GrowsWithMassDisparity) {
 
 TEST(MixtureViscosityTheory, RegressionAgainstTheDerivationScript) {
   // docs/derivations/viscosity.py (its own assembly from the raw coefficient functions and mixture_hcs.py's state).
-  EXPECT_NEAR(mixture_viscosity_from_ratios(10.0, 1.0, 1.0, 0.7, 0.0, kThermostat).over_elastic, 1.94028291466936, 1e-9);
+  EXPECT_NEAR(mixture_viscosity_from_ratios(10.0, 1.0, 1.0, 0.7, 0.0, kThermostat).over_elastic, 1.94028291466936,
+              1e-9);
   EXPECT_NEAR(mixture_viscosity_from_ratios(4.0, 0.5, 1.0, 0.8, 0.0, kThermostat).over_elastic, 1.70562910630032, 1e-9);
-  EXPECT_NEAR(mixture_viscosity_from_ratios(4.0, 1.0, 0.25, 0.9, 0.0, kThermostat).over_elastic, 1.15822923391026, 1e-9);
+  EXPECT_NEAR(mixture_viscosity_from_ratios(4.0, 1.0, 0.25, 0.9, 0.0, kThermostat).over_elastic, 1.15822923391026,
+              1e-9);
   EXPECT_NEAR(mixture_viscosity_from_ratios(4.0, 2.0, 1.0, 0.7, 0.0, kCooling).over_elastic, 1.16459602398864, 1e-9);
   const MixtureViscosityRatios f = mixture_viscosity_from_ratios(4.0, 1.0, 1.0, 0.8, 0.2, kThermostat);
   EXPECT_NEAR(f.kinetic_star, 0.761370558223578, 1e-9);

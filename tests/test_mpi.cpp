@@ -4,7 +4,6 @@
 // bit-identical (wall_seconds and threads aside), the JSON summaries equal, nothing written by the other
 // ranks, and one message from a bad scene. The test launches mpirun itself; CTest sets
 // OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) for it (tests/CMakeLists.txt), as OpenMPI refuses root without them.
-#include <gtest/gtest.h>
 #include <hdf5.h>
 
 #include <algorithm>
@@ -15,12 +14,14 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "drivers/mpi_replicas.hpp"
 #include "tests/granmc_process.hpp"
@@ -212,7 +213,8 @@ class MpiRun : public granmc_test::GranmcDirectory {
           "run scene.toml --seed 77 --out " + stem + ".h5 --summary " + stem + ".json --threads " + w.threads + options,
           w.prefix);
       ASSERT_EQ(o.status, 0) << w.name << "\n" << o.stdout_text << o.stderr_text;
-      EXPECT_EQ(std::count(o.stdout_text.begin(), o.stdout_text.end(), '\n'), 1) << w.name << ": one closing line\n" << o.stdout_text;
+      EXPECT_EQ(std::count(o.stdout_text.begin(), o.stdout_text.end(), '\n'), 1) << w.name << ": one closing line\n"
+                                                                                 << o.stdout_text;
       EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / (stem + ".json")))["ranks"], w.ranks) << w.name;
       outputs.push_back(stem);
     }
@@ -396,14 +398,17 @@ TEST_F(MpiRun, ShearWithGaussianThermostatIsBitIdentical) {
 /// One system over the ranks (--spread particles, schemes/spread_dsmc.hpp): 20000 particles are 5 chunks of
 /// 4096, so 2 and 3 ranks split them unevenly and 6 ranks leave one rank without particles.
 std::string spread_scene() {
-  return edited(cooling_scene, {{"replicas = 5", "replicas = 2"}, {"t_end = 1.0", "t_end = 2.0"},
-                                {"particles = 2000", "particles = 20000"}, {"restitution = 0.8", "restitution = 0.7"}}) +
+  return edited(cooling_scene, {{"replicas = 5", "replicas = 2"},
+                                {"t_end = 1.0", "t_end = 2.0"},
+                                {"particles = 2000", "particles = 20000"},
+                                {"restitution = 0.8", "restitution = 0.7"}}) +
          "[output]\nhistogram = { shells = 16, radius = 4.0 }\n";
 }
 
 TEST_F(MpiRun, OneSystemOverRanksIsBitIdentical) {
   write("scene.toml", spread_scene());
-  expect_identical_runs(ways(false), {"/temperature/replicas", "/species/a/speed_distribution/counts", "/counters/candidates"},
+  expect_identical_runs(ways(false),
+                        {"/temperature/replicas", "/species/a/speed_distribution/counts", "/counters/candidates"},
                         " --spread particles");
 }
 
@@ -447,7 +452,8 @@ TEST_F(MpiRun, SweepOverRanksMatchesOneProcessAndResumes) {
   const Outcome two = granmc("sweep alpha.toml --out-dir two --threads 1", mpirun(2));
   ASSERT_EQ(two.status, 0) << two.stdout_text << two.stderr_text;
   EXPECT_EQ(std::count(two.stdout_text.begin(), two.stdout_text.end(), '\n'), 5) << "4 scene lines and 1 closing line, "
-                                                                                    "from rank 0 alone:\n" << two.stdout_text;
+                                                                                    "from rank 0 alone:\n"
+                                                                                 << two.stdout_text;
   expect_same_sweep("one", "two", 4);
   const Outcome again = granmc("sweep alpha.toml --out-dir two --threads 1", mpirun(2));
   ASSERT_EQ(again.status, 0) << again.stderr_text;
@@ -470,7 +476,7 @@ TEST_F(MpiRun, SweepGivesWholeScenesToGroupsOfRanks) {
   EXPECT_NE(four.stdout_text.find("on 4 MPI ranks in 2 groups"), std::string::npos) << four.stdout_text;
   EXPECT_NE(four.stdout_text.find("by rank group 2 of 2 (2 ranks)"), std::string::npos) << four.stdout_text;
   EXPECT_EQ(std::count(four.stdout_text.begin(), four.stdout_text.end(), '\n'), 7) << "6 scene lines, 1 closing line\n"
-                                                                                     << four.stdout_text;
+                                                                                   << four.stdout_text;
   expect_same_sweep("one", "four", 6);
 }
 
@@ -480,7 +486,8 @@ TEST_F(MpiRun, BadSceneStopsEveryRankWithOneMessage) {
   EXPECT_EQ(o.status, 2) << o.stdout_text << o.stderr_text;
   const std::string first_line = o.stderr_text.substr(0, o.stderr_text.find('\n'));
   EXPECT_NE(first_line.find("scene.toml"), std::string::npos) << o.stderr_text;
-  EXPECT_EQ(o.stderr_text.find(first_line, first_line.size()), std::string::npos) << "printed twice:\n" << o.stderr_text;
+  EXPECT_EQ(o.stderr_text.find(first_line, first_line.size()), std::string::npos) << "printed twice:\n"
+                                                                                  << o.stderr_text;
   EXPECT_EQ(files(), std::vector<std::string>{"scene.toml"});
 }
 

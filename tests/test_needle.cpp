@@ -2,20 +2,20 @@
 // integrated flux against quadrature, the samplers against the moments of their target laws, the
 // event-time root finder on a state where Newton cycles, elastic equipartition, the inelastic ordering
 // T_B > T_tr > T_rot and the translation-rotation correlation R (002 eq. 34, Fig. 7), and the hard cases.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <numbers>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "io/run_report.hpp"
 #include "kernel/collide/needle_flux.hpp"
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/intruder_needle.hpp"
 #include "kernel/schemes/replica_runner.hpp"
+#include "kernel/setup/run_scene.hpp"
 
 using namespace granmc;
 

@@ -1,8 +1,6 @@
 // Numerical hygiene (issue 7 item 4): the sums behind moments of 10^7 particles are compensated, and the
 // random unit vectors and Gaussians have the statistics they claim (moments with CIs, a chi-square test
 // of the direction distribution on equal-area cells). Each check would fail without what it checks.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -14,6 +12,8 @@
 #include <span>
 #include <tuple>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
@@ -133,10 +133,11 @@ TEST(Numerics, TurnSincosIsAccurateToTwoUlp) {
   };
   for (int k = 0; k <= 400000; ++k) check(k / 400000.0);
   const RandomStream rng(11, 0);
-  for (std::uint64_t s = 0; s < 1'000'000; ++s) check(uniform_open(rng.block(RngPurpose::initial_velocity, 0, 0, s)[0]));
+  for (std::uint64_t s = 0; s < 1'000'000; ++s)
+    check(uniform_open(rng.block(RngPurpose::initial_velocity, 0, 0, s)[0]));
   EXPECT_LT(worst, 2.0 * 0x1p-52);
-  for (const auto& [t, c, s] : {std::tuple{0.0, 1.0, 0.0}, {0.25, 0.0, 1.0}, {0.5, -1.0, 0.0}, {0.75, 0.0, -1.0},
-                                {1.0, 1.0, 0.0}}) {
+  for (const auto& [t, c, s] :
+       {std::tuple{0.0, 1.0, 0.0}, {0.25, 0.0, 1.0}, {0.5, -1.0, 0.0}, {0.75, 0.0, -1.0}, {1.0, 1.0, 0.0}}) {
     EXPECT_EQ(turn_sincos(t).cos, c) << t;
     EXPECT_EQ(turn_sincos(t).sin, s) << t;
   }
@@ -184,8 +185,8 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
   EXPECT_LE(worst_log, 2.0);
   EXPECT_LE(worst_normal, 2.0);  // in units of the ulp of the radius sqrt(-2 log u1)
   EXPECT_LE(worst_power, 64.0);
-  std::printf("[ measured ] largest SIMD - scalar differences in ulp: -log %.2f, normals %.2f, u^2.5 %.2f\n",
-              worst_log, worst_normal, worst_power);
+  std::printf("[ measured ] largest SIMD - scalar differences in ulp: -log %.2f, normals %.2f, u^2.5 %.2f\n", worst_log,
+              worst_normal, worst_power);
 }
 
 TEST(Numerics, IndicesLaneByLaneAreTheScalarIndices) {
@@ -194,7 +195,8 @@ TEST(Numerics, IndicesLaneByLaneAreTheScalarIndices) {
   // index equal, and every index below its range.
   constexpr std::size_t lanes = 64;
   const RandomStream rng(17, 0);
-  constexpr std::array<std::uint32_t, 8> edge_ranges = {1u, 2u, 3u, 10u, 99'999u, 10'000'000u, 0x80000001u, 0xFFFFFFFFu};
+  constexpr std::array<std::uint32_t, 8> edge_ranges = {1u,      2u,          3u,          10u,
+                                                        99'999u, 10'000'000u, 0x80000001u, 0xFFFFFFFFu};
   for (std::uint64_t chunk = 0; chunk < (1u << 14); ++chunk) {
     std::array<std::uint32_t, lanes> hi, lo, n;
     for (std::size_t k = 0; k < lanes; ++k) {
@@ -228,7 +230,8 @@ TEST(Numerics, NotGreaterBitsAreTheScalarComparisons) {
       b[k] = r[2] % 4 == 0 ? special[r[3] % special.size()] : uniform_open(r[3]);
       if (r[0] % 16 == 1) b[k] = a[k];
     }
-    const std::uint64_t bits = not_greater_bits(SimdDouble::load_unaligned(a.data()), SimdDouble::load_unaligned(b.data()));
+    const std::uint64_t bits =
+        not_greater_bits(SimdDouble::load_unaligned(a.data()), SimdDouble::load_unaligned(b.data()));
     for (std::size_t k = 0; k < w; ++k)
       ASSERT_EQ((bits >> k) & 1u, static_cast<std::uint64_t>(!(a[k] > b[k]))) << a[k] << " " << b[k];
     ASSERT_EQ(bits >> w, 0u);
@@ -249,7 +252,8 @@ void check_lane_helpers() {
     alignas(64) std::array<std::uint64_t, w> i, j;
     for (std::size_t k = 0; k < w; ++k) {
       const RandomBlock r = rng.block(RngPurpose::initial_velocity, 0, round, k);
-      a[k] = std::ldexp(uniform_open(r[0]) - 0.5, static_cast<int>(r[1] % 300) - 150);  // below, in, above float's range
+      a[k] =
+          std::ldexp(uniform_open(r[0]) - 0.5, static_cast<int>(r[1] % 300) - 150);  // below, in, above float's range
       b[k] = uniform_open(r[2]) - 0.5;
       i[k] = r[3] % (2 * w * w);  // often equal to another lane's value
       j[k] = r[1] % (2 * w * w);
@@ -261,10 +265,12 @@ void check_lane_helpers() {
     bool different = true;
     for (std::size_t k = 0; k < w; ++k) {
       ASSERT_EQ((bits >> k) & 1u, static_cast<std::uint64_t>(a[k] < b[k]));
-      ASSERT_EQ(std::bit_cast<std::uint64_t>(rounded[k]), std::bit_cast<std::uint64_t>(static_cast<double>(static_cast<float>(a[k]))))
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(rounded[k]),
+                std::bit_cast<std::uint64_t>(static_cast<double>(static_cast<float>(a[k]))))
           << Arch::name() << ": " << a[k];
       ASSERT_EQ(std::bit_cast<std::uint64_t>(same[k]), std::bit_cast<std::uint64_t>(a[k]));
-      for (std::size_t l = 0; l < w; ++l) different = different && i[k] != j[l] && (k == l || (i[k] != i[l] && j[k] != j[l]));
+      for (std::size_t l = 0; l < w; ++l)
+        different = different && i[k] != j[l] && (k == l || (i[k] != i[l] && j[k] != j[l]));
     }
     ASSERT_EQ(bits >> w, 0u);
     ASSERT_EQ(all_different(Indices::load_aligned(i.data()), Indices::load_aligned(j.data())), different);

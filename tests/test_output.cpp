@@ -1,6 +1,5 @@
 // Output: the run report's replica statistics against hand-computed values, the HDF5 file read back with
 // the HDF5 C API, the temporary-file-and-rename rule, and the JSON summary contract (SCENES.md "Summary").
-#include <gtest/gtest.h>
 #include <hdf5.h>
 #include <unistd.h>
 
@@ -9,12 +8,15 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
 #include "granmc/version.hpp"
 #include "io/hdf5_output.hpp"
+#include "io/output_schema.hpp"
 #include "io/run_report.hpp"
 #include "io/summary_json.hpp"
 
@@ -229,8 +231,9 @@ TEST(Output, Hdf5FileReadsBack) {
 
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
-  EXPECT_EQ(read_string_attribute(file, "/", "scene"), scene.source_text);
-  EXPECT_EQ(read_string_attribute(file, "/", "scene_path"), scene.source_path);
+  EXPECT_EQ(read_string_attribute(file, "/", "scene_text"), scene.source_text);
+  EXPECT_EQ(read_string_attribute(file, "/", "scene"), scene.source_path);
+  EXPECT_EQ(read_string_attribute(file, "/", "format_version"), output_format_version());
   EXPECT_EQ(read_string_attribute(file, "/", "method"), "dsmc");
   EXPECT_EQ(read_string_attribute(file, "/", "version"), std::string(granmc::version));
   EXPECT_NE(read_string_attribute(file, "/", "units").find("k_B = 1"), std::string::npos);
@@ -251,7 +254,7 @@ TEST(Output, Hdf5FileReadsBack) {
   EXPECT_EQ(dims, (std::vector<hsize_t>{2, 3, 3}));
   EXPECT_EQ(read_doubles(file, "/collisions/replicas"), (std::vector<double>{0, 10, 25, 0, 12, 30}));
   EXPECT_EQ(read_doubles(file, "/theory/haff_temperature"), report.theory->temperature);
-  EXPECT_DOUBLE_EQ(read_scalar_attribute<double>(file, "/theory", "a2_sonine", H5T_NATIVE_DOUBLE), report.theory->a2);
+  EXPECT_DOUBLE_EQ(read_scalar_attribute<double>(file, "/theory", "a2", H5T_NATIVE_DOUBLE), report.theory->a2);
   EXPECT_NE(read_string_attribute(file, "/temperature/ci", "description").find("lambda_p"), std::string::npos);
 
   std::vector<std::uint64_t> candidates(2);

@@ -1,10 +1,10 @@
 // Philox streams: reproducible, distinct by (seed, replica) and by purpose; exact variate conversions.
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <set>
+
+#include <gtest/gtest.h>
 
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
@@ -13,7 +13,8 @@ using namespace granmc;
 
 TEST(Philox, SameAddressSameBlock) {
   const RandomStream a(42, 3), b(42, 3);
-  EXPECT_EQ(a.block(RngPurpose::collision_pair, 0, 17, 123456789), b.block(RngPurpose::collision_pair, 0, 17, 123456789));
+  EXPECT_EQ(a.block(RngPurpose::collision_pair, 0, 17, 123456789),
+            b.block(RngPurpose::collision_pair, 0, 17, 123456789));
 }
 
 TEST(Philox, KeyAndCounterFieldsAllMatter) {
@@ -60,7 +61,10 @@ TEST(Sampling, UnitVectorsAreUnitAndIsotropic) {
     const RandomBlock r = s.block(RngPurpose::collision_pair, 0, 0, k);
     const Vec3 e = unit_vector(uniform_open(r[0]), uniform_open(r[1]));
     ASSERT_NEAR(norm2(e), 1.0, 1e-15);
-    mx += e.x; my += e.y; mz += e.z; mzz += e.z * e.z;
+    mx += e.x;
+    my += e.y;
+    mz += e.z;
+    mzz += e.z * e.z;
   }
   const double se = std::sqrt(1.0 / 3.0 / n);  // std of one component is 1/sqrt(3)
   EXPECT_NEAR(mx / n, 0.0, 5 * se);
@@ -77,7 +81,11 @@ TEST(Sampling, BoxMullerGivesUnitNormals) {
     const RandomBlock r = s.block(RngPurpose::initial_velocity, 0, 0, k);
     double z1, z2;
     standard_normal_pair(uniform_open(r[0]), uniform_open(r[1]), z1, z2);
-    for (double z : {z1, z2}) { m1 += z; m2 += z * z; m4 += z * z * z * z; }
+    for (double z : {z1, z2}) {
+      m1 += z;
+      m2 += z * z;
+      m4 += z * z * z * z;
+    }
   }
   const double N = 2.0 * n;
   EXPECT_NEAR(m1 / N, 0.0, 5 / std::sqrt(N));

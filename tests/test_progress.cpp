@@ -1,9 +1,9 @@
 // The progress of a run on stderr (drivers/progress.cpp): with stderr sent to a log, whole lines with the
 // fraction done and the time left, one per interval; nothing when off.
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "drivers/progress.hpp"
 

@@ -2,12 +2,12 @@
 // make_plan, with a reason naming what is not supported, or runs through the dispatch, which compiles only
 // the supported products; the plan holds the evaluators with the scene's parameters; the name and the
 // explanation are read off the plan.
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <numbers>
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "io/scene_file.hpp"
 #include "kernel/setup/explain.hpp"
@@ -32,7 +32,8 @@ std::string scene_text(const Kinds& k) {
                   std::string(k.storage) + "\"\n";
   // With a packing fraction, the densities that give it with unit diameters (the scene file checks it under shear).
   char density[32];
-  std::snprintf(density, sizeof density, "%.17g", k.packing > 0.0 ? 6.0 * k.packing / (std::numbers::pi * k.species) : 0.1);
+  std::snprintf(density, sizeof density, "%.17g",
+                k.packing > 0.0 ? 6.0 * k.packing / (std::numbers::pi * k.species) : 0.1);
   for (int i = 0; i < k.species; ++i)
     t += "[[species]]\nname = \"s" + std::to_string(i) + "\"\nparticles = 64\ndensity = " + density + "\n";
   t += "[collision]\nkernel = \"" + std::string(k.kernel) + "\"\nrestitution = 0.9\n";

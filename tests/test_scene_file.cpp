@@ -1,12 +1,12 @@
 // The scene reader (io/scene_file.cpp): valid scenes give the right values and defaults; every bad input
 // is refused with one message "<path>: <key>: <what is wrong>; <what is allowed>".
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
+
+#include <gtest/gtest.h>
 
 #include "io/scene_file.hpp"
 

@@ -3,11 +3,11 @@
 // the elastic dilute gas has the Navier-Stokes viscosity 1.016 eta0 (003); collisions with the shifted
 // contact velocity conserve momentum; a* of order 1 at phi = 0.5 stays finite. The BGK-like relaxation term
 // of 003 replaces the right fraction of particles with draws from the first-Sonine cooling state.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "io/run_report.hpp"
 #include "kernel/collide/enskog_chi.hpp"
@@ -16,8 +16,8 @@
 #include "kernel/effects/bgk_relaxation.hpp"
 #include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/observe/replica_statistics.hpp"
-#include "kernel/setup/run_scene.hpp"
 #include "kernel/schemes/dsmc.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/sonine.hpp"
 
 using namespace granmc;
@@ -91,7 +91,8 @@ TEST(Shear, EnskogCollisionalTransferGivesTheEquationOfState) {
   const double expected = 4.0 * phi * enskog_chi(phi, {1.0}, {1.0}, 0, 0);
   std::vector<double> diag, xy;
   for (std::uint64_t r = 0; r < 12; ++r) {
-    Dsmc<HardSphere, LagrangianShear, EnskogShearShift> sim(s, r, LagrangianShear{0.0, species_masses(s)}, EnskogShearShift{0.0});
+    Dsmc<HardSphere, LagrangianShear, EnskogShearShift> sim(s, r, LagrangianShear{0.0, species_masses(s)},
+                                                            EnskogShearShift{0.0});
     sim.advance_to(1.0);
     const SymTensor p = sim.take_collisional_pressure();
     diag.push_back(p.trace() / 3.0);
@@ -149,7 +150,7 @@ TEST(Shear, LargeShearRateAtHighDensityStaysFinite) {
   s.run.dt = 0.002;
   s.run.t_end = 2.0;
   const double nu = std::sqrt(std::numbers::pi) * s.species[0].density * std::sqrt(2.0);  // at T = 1
-  s.shear_rate = nu;                                                                     // a* = 1
+  s.shear_rate = nu;                                                                      // a* = 1
   const RunResult result = run_scene(s, {});
   const RunReport report = make_run_report(s, result, 0.0);
   for (std::size_t k = 0; k < result.times.size(); ++k) {

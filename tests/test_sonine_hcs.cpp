@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "kernel/theory/sonine.hpp"
 #include "kernel/theory/sonine_hcs.hpp"

@@ -1,8 +1,6 @@
 // SonineMaxwellian (kernel/core/sonine_maxwellian.hpp): moments, isotropy and the speed distribution of
 // Philox samples against Simpson quadrature of max(phi, 0); the truncated mass against a direct integral.
 // Statistical tolerances are 5 standard errors from the sample variance; the chi-square test is at p = 0.001.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,6 +8,8 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+
+#include <gtest/gtest.h>
 
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"

@@ -1,10 +1,10 @@
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+
+#include <gtest/gtest.h>
 
 #include "kernel/core/species_store.hpp"
 
@@ -89,7 +89,6 @@ TEST(SpeciesStore, FloatLastUpdateTimesKeepTheirResolutionAfterARestart) {
   EXPECT_EQ(d.last_update(0), t0 + step);
 }
 
-
 namespace {
 
 std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
@@ -102,7 +101,8 @@ void check_lanes() {
   constexpr std::size_t w = Batch::size;
   BasicSpeciesStore<Real> store(1000), expected(1000);
   for (std::size_t k = 0; k < store.size(); ++k) {  // values that float rounds, and a restarted clock
-    const Vec3 v{std::sqrt(2.0 + k), -1.0 / (3.0 + k), std::ldexp(1.0 + 1.0 / (7.0 + k), static_cast<int>(k % 40) - 20)};
+    const Vec3 v{std::sqrt(2.0 + k), -1.0 / (3.0 + k),
+                 std::ldexp(1.0 + 1.0 / (7.0 + k), static_cast<int>(k % 40) - 20)};
     store.set_velocity(k, v);
     expected.set_velocity(k, v);
   }

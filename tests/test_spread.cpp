@@ -3,16 +3,16 @@
 // majorant is not raised, makes the same collisions. Only the order of the sums over particles differs
 // (per chunk, then over chunks), so the observations agree to rounding: the same chain, hence the same
 // law. tests/test_mpi.cpp checks that 2, 3 and 6 ranks give the bits of one.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "kernel/core/ranks.hpp"
+#include <gtest/gtest.h>
+
 #include "kernel/collide/hard_sphere.hpp"
-#include "kernel/setup/run_scene.hpp"
+#include "kernel/core/ranks.hpp"
 #include "kernel/schemes/spread_dsmc.hpp"
+#include "kernel/setup/run_scene.hpp"
 
 using namespace granmc;
 

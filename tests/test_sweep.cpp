@@ -3,8 +3,6 @@
 // mid-scene leaves nothing under the unfinished scene's names, and its rerun skips the finished scene
 // (files untouched), removes stale temporary files and completes the rest; an edited base reruns; a bad
 // sweep file exits 2 with one message and writes nothing.
-#include <gtest/gtest.h>
-
 #include <fcntl.h>
 #include <hdf5.h>
 #include <signal.h>
@@ -21,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "tests/granmc_process.hpp"
@@ -55,7 +54,6 @@ class Sweep : public granmc_test::GranmcDirectory {
   }
 
   nlohmann::json json(const std::string& name) const { return nlohmann::json::parse(slurp(dir_ / name)); }
-
 };
 
 /// `text` with `from` replaced by `to`.
@@ -128,7 +126,8 @@ TEST_F(Sweep, GridWritesEveryScenesFilesAndAnIndexWithTheNumbersOfRun) {
   write("by_hand.toml", replaced(with("[run]", "[run]\nseed = 2"), "restitution = 0.9", "restitution = 0.7"));
   ASSERT_EQ(granmc("run by_hand.toml --quiet --threads 1 --out by_hand.h5 --summary by_hand.json").status, 0);
   EXPECT_EQ(numbers(json("alpha/restitution0.7_seed2.json")).dump(), numbers(json("by_hand.json")).dump());
-  EXPECT_EQ(json("alpha/restitution0.7_seed2.json")["scene"], "base.toml with collision.restitution = 0.7, run.seed = 2");
+  EXPECT_EQ(json("alpha/restitution0.7_seed2.json")["scene"],
+            "base.toml with collision.restitution = 0.7, run.seed = 2");
   for (const char* set : {"/temperature/replicas", "/species/a/a2/replicas", "/collisions/replicas"})
     EXPECT_EQ(dataset(dir_ / "alpha/restitution0.7_seed2.h5", set), dataset(dir_ / "by_hand.h5", set)) << set;
 }
@@ -136,10 +135,11 @@ TEST_F(Sweep, GridWritesEveryScenesFilesAndAnIndexWithTheNumbersOfRun) {
 TEST_F(Sweep, KilledSweepLeavesNoPartialFileAndItsRerunSkipsTheFinishedScene) {
   write("base.toml", base_scene);
   // The second scene is long enough (about 1 s) to be killed while it runs.
-  write("list.toml", "base = \"base.toml\"\n"
-                     "[[scenes]]\nrun.seed = 1\n"
-                     "[[scenes]]\nrun.seed = 2\n\"species[0].particles\" = 100000\n"
-                     "[[scenes]]\nrun.seed = 3\n");
+  write("list.toml",
+        "base = \"base.toml\"\n"
+        "[[scenes]]\nrun.seed = 1\n"
+        "[[scenes]]\nrun.seed = 2\n\"species[0].particles\" = 100000\n"
+        "[[scenes]]\nrun.seed = 3\n");
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
@@ -187,9 +187,9 @@ TEST_F(Sweep, KilledSweepLeavesNoPartialFileAndItsRerunSkipsTheFinishedScene) {
   EXPECT_EQ(slurp(dir_ / "out/seed1.h5"), first_h5);
   EXPECT_EQ(slurp(dir_ / "out/seed1.json"), first_json);
   EXPECT_EQ(fs::last_write_time(dir_ / "out/seed1.h5"), first_time);
-  EXPECT_EQ(files("out"), (std::set<std::string>{"index.json", "keep.tmp-1", "seed1.h5", "seed1.json",
-                                                 "seed2_particles100000.h5", "seed2_particles100000.json",
-                                                 "seed3.h5", "seed3.json"}));
+  EXPECT_EQ(files("out"),
+            (std::set<std::string>{"index.json", "keep.tmp-1", "seed1.h5", "seed1.json", "seed2_particles100000.h5",
+                                   "seed2_particles100000.json", "seed3.h5", "seed3.json"}));
   for (const auto& s : json("out/index.json")["scenes"]) EXPECT_EQ(s["status"], "done") << s;
 }
 
@@ -231,7 +231,8 @@ TEST_F(Sweep, BadSweepFilesExitTwoWithOneMessageAndNoOutput) {
   const std::vector<Case> cases = {
       {"broken", "base = \n", "invalid TOML"},
       {"unknown_key", grid + "frobnicate = [1]\n", "frobnicate: unknown key"},
-      {"top_level_key", "bases = \"base.toml\"\n" + grid.substr(grid.find('[')) + "\"run.seed\" = [1]\n", "bases: unknown key"},
+      {"top_level_key", "bases = \"base.toml\"\n" + grid.substr(grid.find('[')) + "\"run.seed\" = [1]\n",
+       "bases: unknown key"},
       {"no_base", "[grid]\n\"run.seed\" = [1]\n", "base: missing"},
       {"missing_base", "base = \"nowhere.toml\"\n[grid]\n\"run.seed\" = [1]\n", "nowhere.toml: cannot open"},
       {"no_values", "base = \"base.toml\"\n", "missing [grid] or [[scenes]]"},
@@ -241,7 +242,8 @@ TEST_F(Sweep, BadSweepFilesExitTwoWithOneMessageAndNoOutput) {
       {"bad_key", grid + "\"collision..restitution\" = [0.5]\n", "not a scene key"},
       {"no_such_species", grid + "\"species[1].mass\" = [2.0]\n", "has 1 [[species]] table"},
       {"not_a_table", grid + "\"run.t_end.x\" = [2.0]\n", "run.t_end is a value in the base scene"},
-      {"bad_value", grid + "\"collision.restitution\" = [0.5, 1.5]\n", "collision.restitution = 1.5: collision.restitution: 1.5"},
+      {"bad_value", grid + "\"collision.restitution\" = [0.5, 1.5]\n",
+       "collision.restitution = 1.5: collision.restitution: 1.5"},
       {"unknown_scene_key", grid + "\"collision.restitutio\" = [0.5]\n", "did you mean restitution"},
       {"same_names", grid + "\"collision.restitution\" = [0.5, 0.5]\n", "would both write restitution0.5.h5"},
       {"unsupported", "base = \"event.toml\"\n[grid]\n\"run.seed\" = [1]\n", "supported:"},

@@ -1,9 +1,9 @@
 // The same scene and seed give bit-identical results with 1 and 2 OpenMP threads: random numbers are
 // addressed by (seed, replica, step, purpose), never by thread, and replica statistics sum in order.
-#include <gtest/gtest.h>
-
 #include <cstring>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "kernel/setup/run_scene.hpp"
 
@@ -60,8 +60,7 @@ std::string scheme_name(int which) {
 class ThreadIdentity : public ::testing::TestWithParam<int> {};
 
 INSTANTIATE_TEST_SUITE_P(Schemes, ThreadIdentity, ::testing::Values(0, 1, 2, 3),
-                         [](const auto& info) { return scheme_name(info.param);
-                         });
+                         [](const auto& info) { return scheme_name(info.param); });
 
 namespace {
 
@@ -92,7 +91,8 @@ TEST_P(ThreadIdentity, OneAndTwoThreadsGiveTheSameBits) {
     EXPECT_EQ(x.candidates, y.candidates);
     ASSERT_EQ(x.pressure_collisional.size(), y.pressure_collisional.size());
     EXPECT_EQ(std::memcmp(x.pressure_collisional.data(), y.pressure_collisional.data(),
-                          x.pressure_collisional.size() * sizeof(SymTensor)), 0);
+                          x.pressure_collisional.size() * sizeof(SymTensor)),
+              0);
   }
   // Replicas are different realisations, not copies.
   EXPECT_NE(a.replicas[0].temperature.back(), a.replicas[1].temperature.back());

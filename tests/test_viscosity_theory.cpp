@@ -1,7 +1,7 @@
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "kernel/collide/enskog_chi.hpp"
 #include "kernel/theory/sonine.hpp"
@@ -22,7 +22,8 @@ double chi_cs(double phi) { return (1.0 - 0.5 * phi) / std::pow(1.0 - phi, 3); }
 
 // 003's c0(alpha), transcribed from the slide.
 double c0_003(double alpha) {
-  return 32.0 * (1.0 - alpha) * (1.0 - 2.0 * alpha * alpha) / (81.0 - 17.0 * alpha + 30.0 * alpha * alpha * (1.0 - alpha));
+  return 32.0 * (1.0 - alpha) * (1.0 - 2.0 * alpha * alpha) /
+         (81.0 - 17.0 * alpha + 30.0 * alpha * alpha * (1.0 - alpha));
 }
 
 // 003's eta^k and eta, transcribed from the slide (the cooling-state coefficient).
@@ -75,7 +76,8 @@ TEST(ViscosityTheory, CarnahanStarlingOverloadUsesEnskogChi) {
   for (double phi : {0.0, 0.1, 0.3, 0.5}) {
     EXPECT_NEAR(granmc::enskog_chi(phi, {1.0}, {1.0}, 0, 0), chi_cs(phi), 1e-14 * chi_cs(phi));
     for (ViscosityReference r : {kCooling, kThermostat})
-      EXPECT_EQ(shear_viscosity(0.7, phi, r).total, shear_viscosity(0.7, phi, granmc::enskog_chi(phi, {1.0}, {1.0}, 0, 0), r).total);
+      EXPECT_EQ(shear_viscosity(0.7, phi, r).total,
+                shear_viscosity(0.7, phi, granmc::enskog_chi(phi, {1.0}, {1.0}, 0, 0), r).total);
   }
 }
 
@@ -86,8 +88,10 @@ TEST(ViscosityTheory, DenominatorsAreNuEtaMinusZetaOverTwoOrZeta) {
     for (double chi : {1.0, 1.7, 4.2}) {
       const double c0 = 2.0 * hcs_a2(alpha);
       const ShearViscosity v = shear_viscosity(alpha, 0.0, chi, kCooling);
-      EXPECT_NEAR(v.nu_eta - 0.5 * v.zeta, chi * (1.0 + alpha) * (16.0 * (13.0 - alpha) - 3.0 * (4.0 - 3.0 * alpha) * c0) / 384.0, 1e-14);
-      EXPECT_NEAR(v.nu_eta - v.zeta, chi * (1.0 + alpha) * (64.0 * (2.0 + alpha) - 1.5 * (13.0 - 11.0 * alpha) * c0) / 384.0, 1e-14);
+      EXPECT_NEAR(v.nu_eta - 0.5 * v.zeta,
+                  chi * (1.0 + alpha) * (16.0 * (13.0 - alpha) - 3.0 * (4.0 - 3.0 * alpha) * c0) / 384.0, 1e-14);
+      EXPECT_NEAR(v.nu_eta - v.zeta,
+                  chi * (1.0 + alpha) * (64.0 * (2.0 + alpha) - 1.5 * (13.0 - 11.0 * alpha) * c0) / 384.0, 1e-14);
       EXPECT_NEAR(1.0 / shear_viscosity(alpha, 0.0, chi, kThermostat).kinetic, v.nu_eta - v.zeta, 1e-14);
     }
 }
@@ -119,7 +123,8 @@ TEST(ViscosityTheory, Figure6HssAboveHcsBothRisingWithDissipation) {
   // influence of dissipation on the viscosity in the HCS case is smaller than in the HSS."
   double hcs_prev = 1.0, hss_prev = 1.0;
   for (double alpha = 0.95; alpha >= -1e-12; alpha -= 0.05) {
-    const double hcs = shear_viscosity(alpha, 0.0, kCooling).total, hss = shear_viscosity(alpha, 0.0, kThermostat).total;
+    const double hcs = shear_viscosity(alpha, 0.0, kCooling).total,
+                 hss = shear_viscosity(alpha, 0.0, kThermostat).total;
     EXPECT_GT(hcs, hcs_prev) << alpha;
     EXPECT_GT(hss, hss_prev) << alpha;
     EXPECT_GT(hss, hcs) << alpha;

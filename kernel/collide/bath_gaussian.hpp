@@ -52,7 +52,7 @@ struct GaussianBath {
       x = x1 - w;
     } else {
       const double weight_gauss = x1 * std::sqrt(std::numbers::pi);  // int x1 e^{-z^2} over all z
-      const double weight_rayleigh = 0.5;                              // int z e^{-z^2}, z >= 0
+      const double weight_rayleigh = 0.5;                            // int z e^{-z^2}, z >= 0
       double z;
       if (uniform_open(u[0]) * (weight_gauss + weight_rayleigh) < weight_gauss) {
         z = std::sqrt(-std::log(uniform_open(u[1]))) * std::cos(2.0 * std::numbers::pi * uniform_open(u[2]));

@@ -72,7 +72,7 @@ struct PowerLawBath {
       } else {
         const double u0 = uniform_open(u[0]), u1 = uniform_open(u[1]), u2 = uniform_open(u[2]);
         const double y = std::max(std::min(u0, u1), std::min(std::max(u0, u1), u2));  // median: Beta(2, 2)
-        w = c * y / (1.0 - y);                                                         // density ~ w / (c + w)^4
+        w = c * y / (1.0 - y);                                                        // density ~ w / (c + w)^4
         const double s4 = std::pow(c + w, 4);
         if (uniform_open(u[3]) * (1.0 + s4) >= s4) return false;
       }

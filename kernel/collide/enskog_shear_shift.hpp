@@ -44,7 +44,7 @@ struct EnskogShearShift {
 
   /// g_kl = V_k - V_l - sigma_ij a sigma-hat_y x-hat (000 sec. 3, step 2).
   [[nodiscard]] Vec3 relative_velocity(const Vec3& vk, const Vec3& vl, const Vec3& sigma,
-                                        const PairCoefficients& p) const noexcept {
+                                       const PairCoefficients& p) const noexcept {
     Vec3 g = vk - vl;
     g.x -= p.diameter * rate * sigma.y;
     return g;

@@ -23,7 +23,9 @@ struct HardSphere {
   static constexpr const char* explanation =
       "hard spheres: omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3)";
   template <class Scene>
-  static constexpr HardSphere from_scene(const Scene&) noexcept { return {}; }
+  static constexpr HardSphere from_scene(const Scene&) noexcept {
+    return {};
+  }
   /// Rate factor for normal relative speed g_sigma = g.sigma-hat > 0.
   static constexpr double rate(double g_sigma, double /*g2*/) noexcept { return g_sigma; }
   static constexpr double bound(double relative_speed) noexcept { return relative_speed; }

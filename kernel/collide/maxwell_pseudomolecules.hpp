@@ -16,7 +16,9 @@ struct MaxwellPseudomolecules {
   static constexpr const char* explanation =
       "Maxwell pseudomolecules in the impact-direction form (16 pi rate (g.sigma)/|g|)";
   template <class Scene>
-  static constexpr MaxwellPseudomolecules from_scene(const Scene&) noexcept { return {}; }
+  static constexpr MaxwellPseudomolecules from_scene(const Scene&) noexcept {
+    return {};
+  }
   static double rate(double g_sigma, double g2) noexcept { return g_sigma / std::sqrt(g2); }
   static constexpr double bound(double /*relative_speed*/) noexcept { return 1.0; }
   static constexpr bool screen_candidates = false;  // every candidate collides

@@ -20,9 +20,8 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       const SpeciesConfig& a = scene.species[i];
       const SpeciesConfig& b = scene.species[j];
       const double sigma_ij = 0.5 * (a.diameter + b.diameter);
-      const double chi = scene.collision.packing_fraction > 0.0
-                             ? enskog_chi(scene.collision.packing_fraction, x, sigma, i, j)
-                             : 1.0;
+      const double chi =
+          scene.collision.packing_fraction > 0.0 ? enskog_chi(scene.collision.packing_fraction, x, sigma, i, j) : 1.0;
       const double alpha = scene.collision.restitution[i][j];
       PairCoefficients p;
       p.i = i;

@@ -28,7 +28,9 @@ struct VariableHardSpheres {
     using std::pow;  // xsimd's for a batch
     return 0.25 * pow(g2, T(0.5 * lambda));
   }
-  [[nodiscard]] double mean_bound(double relative_speed) const noexcept { return 0.25 * std::pow(relative_speed, lambda); }
+  [[nodiscard]] double mean_bound(double relative_speed) const noexcept {
+    return 0.25 * std::pow(relative_speed, lambda);
+  }
 };
 
 }  // namespace granmc

@@ -2,6 +2,8 @@
 // Fixed-size, cache-line-aligned buffer of trivially copyable values. Large buffers are aligned to
 // 2 MiB and advised for transparent huge pages: random pair access over 10^7 particles is bound by
 // TLB and cache misses (docs/performance.md).
+#include <sys/mman.h>
+
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
@@ -9,8 +11,6 @@
 #include <span>
 #include <type_traits>
 #include <utility>
-
-#include <sys/mman.h>
 
 namespace granmc {
 

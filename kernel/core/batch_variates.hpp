@@ -36,6 +36,8 @@ inline xsimd::batch<double, Arch> fused_multiply_add(const xsimd::batch<double, 
                                                      const xsimd::batch<double, Arch>& y,
                                                      const xsimd::batch<double, Arch>& z) noexcept {
   using Batch = xsimd::batch<double, Arch>;
+  // An if-constexpr chain across #if branches, which clang-format would misindent:
+  // clang-format off
 #if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     return _mm512_fmadd_pd(x, y, z);
@@ -46,6 +48,7 @@ inline xsimd::batch<double, Arch> fused_multiply_add(const xsimd::batch<double, 
                        std::is_base_of_v<xsimd::fma3<xsimd::avx2>, Arch>) {
     return xsimd::fma(x, y, z);
   } else {
+    // clang-format on
     alignas(64) double a[Batch::size], b[Batch::size], c[Batch::size];
     x.store_aligned(a);
     y.store_aligned(b);
@@ -106,8 +109,8 @@ inline void power_in_place(std::span<double, N> u, double p) noexcept {
 /// Box-Muller (as standard_normal_pair) lane by lane: two independent standard normals z1[k], z2[k]
 /// from the uniforms u1[k], u2[k] on (0, 1).
 template <std::size_t N>
-inline void standard_normal_pairs(std::span<const double, N> u1, std::span<const double, N> u2,
-                                  std::span<double, N> z1, std::span<double, N> z2) noexcept {
+inline void standard_normal_pairs(std::span<const double, N> u1, std::span<const double, N> u2, std::span<double, N> z1,
+                                  std::span<double, N> z2) noexcept {
   detail::require_whole_registers<N>();
   for (std::size_t k = 0; k < N; k += SimdDouble::size) {
     const SimdDouble r = xsimd::sqrt(-2.0 * xsimd::log(SimdDouble::load_unaligned(&u1[k])));
@@ -149,7 +152,8 @@ inline void unit_vectors(std::span<const double, N> u1, std::span<const double, 
 template <std::size_t N>
 std::size_t selected_unit_vectors(std::uint64_t selected, const std::array<double, N>& u1,
                                   const std::array<double, N>& u2, std::array<std::uint8_t, N>& which,
-                                  std::array<double, N>& x, std::array<double, N>& y, std::array<double, N>& z) noexcept {
+                                  std::array<double, N>& x, std::array<double, N>& y,
+                                  std::array<double, N>& z) noexcept {
   static_assert(N <= 64 && N % SimdDouble::size == 0, "one 64-bit mask, whole registers");
   constexpr std::size_t w = SimdDouble::size;
   std::array<double, N> c1, c2;  // the selected uniforms, packed

@@ -123,6 +123,8 @@ class RandomStream {
   template <class Arch>
   static xsimd::batch<std::uint64_t, Arch> product_32(const xsimd::batch<std::uint64_t, Arch>& a,
                                                       const xsimd::batch<std::uint64_t, Arch>& b) noexcept {
+    // An if-constexpr chain across #if branches, which clang-format would misindent:
+    // clang-format off
 #if XSIMD_WITH_AVX512F
     if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) return _mm512_mul_epu32(a, b);
     else
@@ -136,16 +138,20 @@ class RandomStream {
     else
 #endif
       return a * b;
+    // clang-format on
   }
 
   /// The 32-bit values of the lanes, stored to out[0 .. size).
   template <class Arch>
   static void store_words(const xsimd::batch<std::uint64_t, Arch>& x, std::uint32_t* out) noexcept {
+    // An if-constexpr chain across #if branches, which clang-format would misindent:
+    // clang-format off
 #if XSIMD_WITH_AVX512F
     if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm512_cvtepi64_epi32(x));
     } else
 #endif
+    // clang-format on
     {
       alignas(64) std::uint64_t lanes[xsimd::batch<std::uint64_t, Arch>::size];
       x.store_aligned(lanes);

@@ -21,7 +21,8 @@ class Ranks {
   [[nodiscard]] virtual double max(double value) const = 0;
   /// Sends send[r] to rank r and receives into receive[r] what rank r sent here. Both sides know the
   /// sizes: receive[r] arrives sized.
-  virtual void exchange(const std::vector<std::vector<double>>& send, std::vector<std::vector<double>>& receive) const = 0;
+  virtual void exchange(const std::vector<std::vector<double>>& send,
+                        std::vector<std::vector<double>>& receive) const = 0;
 };
 
 /// One process: every collective is the identity.
@@ -31,7 +32,8 @@ class SingleRank final : public Ranks {
   [[nodiscard]] int size() const noexcept override { return 1; }
   void sum(std::span<double>) const override {}
   [[nodiscard]] double max(double value) const override { return value; }
-  void exchange(const std::vector<std::vector<double>>& send, std::vector<std::vector<double>>& receive) const override {
+  void exchange(const std::vector<std::vector<double>>& send,
+                std::vector<std::vector<double>>& receive) const override {
     receive = send;
   }
 };

@@ -39,10 +39,10 @@ constexpr const char* method_name(Method m) noexcept {
 struct RunConfig {
   Method method = Method::dsmc;
   std::uint64_t seed = 1;
-  int replicas = 1;             // > 0
-  double t_end = 0.0;           // > 0, scene time units
-  double dt = 0.0;              // > 0 for dsmc (initial step when dt_scaling = thermal)
-  int samples = 100;            // > 0; observations at samples + 1 times including t = 0
+  int replicas = 1;    // > 0
+  double t_end = 0.0;  // > 0, scene time units
+  double dt = 0.0;     // > 0 for dsmc (initial step when dt_scaling = thermal)
+  int samples = 100;   // > 0; observations at samples + 1 times including t = 0
   DtScaling dt_scaling = DtScaling::fixed;
   SampleSpacing sample_spacing = SampleSpacing::linear;
   Storage storage = Storage::double_precision;
@@ -50,16 +50,16 @@ struct RunConfig {
 
 struct SpeciesConfig {
   std::string name;
-  double mass = 1.0;            // > 0
-  double diameter = 1.0;        // > 0, sigma_i
-  double density = 1.0;         // > 0, number density n_i
-  std::int64_t particles = 0;   // > 0, simulated particles N_i (N_1/N_2 = n_1/n_2 to 1%)
+  double mass = 1.0;           // > 0
+  double diameter = 1.0;       // > 0, sigma_i
+  double density = 1.0;        // > 0, number density n_i
+  std::int64_t particles = 0;  // > 0, simulated particles N_i (N_1/N_2 = n_1/n_2 to 1%)
 };
 
 struct CollisionConfig {
   CollisionKernel kernel = CollisionKernel::hard_sphere;
-  double lambda = 1.0;          // VHS exponent in [0, 1]
-  double rate = 0.0;            // >= 0; Gamba form (001) when > 0
+  double lambda = 1.0;                                                         // VHS exponent in [0, 1]
+  double rate = 0.0;                                                           // >= 0; Gamba form (001) when > 0
   std::array<std::array<double, 2>, 2> restitution{{{1.0, 1.0}, {1.0, 1.0}}};  // alpha_ij in [0, 1], symmetric
   double packing_fraction = 0.0;  // in [0, 1); > 0 switches on Enskog chi_ij (000 eq. 3)
 };
@@ -72,19 +72,19 @@ struct ThermostatConfig {
 };
 
 struct IntruderConfig {
-  int dimension = 1;            // 1 or 2
-  double mass = 1.0;            // > 0, M (bath particle mass 1)
-  double restitution = 1.0;     // in [0, 1]
+  int dimension = 1;         // 1 or 2
+  double mass = 1.0;         // > 0, M (bath particle mass 1)
+  double restitution = 1.0;  // in [0, 1]
   BathKind bath = BathKind::gaussian;
-  double bath_a = 1.0;          // > 0
-  double bath_density = 1.0;    // > 0
-  double length = 1.0;          // > 0, needle length L
-  double inertia = 0.0;         // >= 0; 0 means M L^2 / 12
+  double bath_a = 1.0;        // > 0
+  double bath_density = 1.0;  // > 0
+  double length = 1.0;        // > 0, needle length L
+  double inertia = 0.0;       // >= 0; 0 means M L^2 / 12
 };
 
 struct HistogramConfig {
-  int shells = 128;             // > 0
-  double radius = 16.0;         // > 0
+  int shells = 128;      // > 0
+  double radius = 16.0;  // > 0
 };
 
 struct Scene {
@@ -92,15 +92,15 @@ struct Scene {
   std::vector<SpeciesConfig> species;  // 1 or 2 for gas scenes, empty for an intruder scene
   CollisionConfig collision;
   ThermostatConfig thermostat;
-  double shear_rate = 0.0;             // a of u_x = a y (000 sec. 2)
-  bool relaxation = false;             // BGK-like relaxation to the HCS (003)
-  std::optional<double> relaxation_a2; // a2 of its f^(0); default the first-Sonine HCS a2 (c0 / 2 of 003)
-  double initial_temperature = 1.0;    // > 0, finite
+  double shear_rate = 0.0;              // a of u_x = a y (000 sec. 2)
+  bool relaxation = false;              // BGK-like relaxation to the HCS (003)
+  std::optional<double> relaxation_a2;  // a2 of its f^(0); default the first-Sonine HCS a2 (c0 / 2 of 003)
+  double initial_temperature = 1.0;     // > 0, finite
   std::optional<IntruderConfig> intruder;
   HistogramConfig histogram;
 
-  std::string source_path;             // where the scene came from (for messages and output)
-  std::string source_text;             // the file's text, stored with the results
+  std::string source_path;  // where the scene came from (for messages and output)
+  std::string source_text;  // the file's text, stored with the results
 };
 
 /// The needle's moment of inertia: the scene's, or M L^2 / 12 (a uniform rod) when it is 0.

@@ -25,6 +25,8 @@ using SimdDouble = xsimd::batch<double>;  // the widest registers the build targ
 /// intrinsics' names exist only there. `make portable-test` builds the tests without them.)
 template <class Arch>
 inline std::uint64_t lane_bits(const xsimd::batch_bool<double, Arch>& mask) noexcept {
+  // An if-constexpr chain across #if branches, which clang-format would misindent:
+  // clang-format off
 #if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
     return static_cast<__mmask8>(mask);
@@ -35,6 +37,7 @@ inline std::uint64_t lane_bits(const xsimd::batch_bool<double, Arch>& mask) noex
     return static_cast<std::uint64_t>(_mm256_movemask_pd(mask));
   } else
 #endif
+  // clang-format on
   {
     alignas(64) bool x[xsimd::batch_bool<double, Arch>::size];
     mask.store_aligned(x);
@@ -46,7 +49,8 @@ inline std::uint64_t lane_bits(const xsimd::batch_bool<double, Arch>& mask) noex
 
 /// Bit k set where !(a[k] > b[k]) (so also where either is NaN), for the SIMD width's lanes.
 template <class Arch>
-inline std::uint64_t not_greater_bits(const xsimd::batch<double, Arch>& a, const xsimd::batch<double, Arch>& b) noexcept {
+inline std::uint64_t not_greater_bits(const xsimd::batch<double, Arch>& a,
+                                      const xsimd::batch<double, Arch>& b) noexcept {
   return lane_bits(!(a > b));
 }
 
@@ -58,6 +62,8 @@ inline xsimd::batch<double, Arch> rounded_to(const xsimd::batch<double, Arch>& x
   if constexpr (std::is_same_v<Real, double>) {
     return x;
   } else
+  // An if-constexpr chain across #if branches, which clang-format would misindent:
+  // clang-format off
 #if XSIMD_WITH_AVX512F
   if constexpr (std::is_base_of_v<xsimd::avx512f, Arch>) {
 #pragma GCC diagnostic push
@@ -72,6 +78,7 @@ inline xsimd::batch<double, Arch> rounded_to(const xsimd::batch<double, Arch>& x
     return _mm256_cvtps_pd(_mm256_cvtpd_ps(x));
   } else
 #endif
+  // clang-format on
   {
     alignas(64) double v[xsimd::batch<double, Arch>::size];
     x.store_aligned(v);
@@ -97,7 +104,8 @@ inline bool any_equal_rotated(const xsimd::batch<std::uint64_t, Arch>& a, const 
 /// Whether the 2 size values a[0..size) and b[0..size) are all different: each register against every
 /// rotation of the other and against half the rotations of itself.
 template <class Arch>
-inline bool all_different(const xsimd::batch<std::uint64_t, Arch>& a, const xsimd::batch<std::uint64_t, Arch>& b) noexcept {
+inline bool all_different(const xsimd::batch<std::uint64_t, Arch>& a,
+                          const xsimd::batch<std::uint64_t, Arch>& b) noexcept {
   constexpr unsigned size = xsimd::batch<std::uint64_t, Arch>::size;
   using Others = std::make_integer_sequence<unsigned, size>;
   if (detail::any_equal_rotated(a, b, Others{})) return false;

@@ -102,8 +102,10 @@ class BasicSpeciesStore {
           return _mm256_set_m128(_mm_load_ps(records_[index[a + 4]].v), _mm_load_ps(records_[index[a]].v));
         };
         const __m256 a0 = pair(0), a1 = pair(1), a2 = pair(2), a3 = pair(3);
-        const __m256 t0 = _mm256_unpacklo_ps(a0, a1), t1 = _mm256_unpackhi_ps(a0, a1);  // x0 x1 y0 y1 | ..., z0 z1 a0 a1 | ...
-        const __m256 t2 = _mm256_unpacklo_ps(a2, a3), t3 = _mm256_unpackhi_ps(a2, a3);  // x2 x3 y2 y3 | ..., z2 z3 a2 a3 | ...
+        const __m256 t0 = _mm256_unpacklo_ps(a0, a1),
+                     t1 = _mm256_unpackhi_ps(a0, a1);  // x0 x1 y0 y1 | ..., z0 z1 a0 a1 | ...
+        const __m256 t2 = _mm256_unpacklo_ps(a2, a3),
+                     t3 = _mm256_unpackhi_ps(a2, a3);  // x2 x3 y2 y3 | ..., z2 z3 a2 a3 | ...
         x = _mm512_cvtps_pd(_mm256_shuffle_ps(t0, t2, 0x44));
         y = _mm512_cvtps_pd(_mm256_shuffle_ps(t0, t2, 0xEE));
         z = _mm512_cvtps_pd(_mm256_shuffle_ps(t1, t3, 0x44));
@@ -114,9 +116,12 @@ class BasicSpeciesStore {
                                     _mm256_load_pd(records_[index[a + 4]].v), 1);
         };
         const __m512d a0 = pair(0), a1 = pair(1), a2 = pair(2), a3 = pair(3);
-        const __m512d t0 = _mm512_unpacklo_pd(a0, a1), t1 = _mm512_unpackhi_pd(a0, a1);  // x0 x1 z0 z1 x4 ..., y0 y1 a0 a1 y4 ...
-        const __m512d t2 = _mm512_unpacklo_pd(a2, a3), t3 = _mm512_unpackhi_pd(a2, a3);  // x2 x3 z2 z3 x6 ..., y2 y3 a2 a3 y6 ...
-        const __m512i low = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13), high = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
+        const __m512d t0 = _mm512_unpacklo_pd(a0, a1),
+                      t1 = _mm512_unpackhi_pd(a0, a1);  // x0 x1 z0 z1 x4 ..., y0 y1 a0 a1 y4 ...
+        const __m512d t2 = _mm512_unpacklo_pd(a2, a3),
+                      t3 = _mm512_unpackhi_pd(a2, a3);  // x2 x3 z2 z3 x6 ..., y2 y3 a2 a3 y6 ...
+        const __m512i low = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13),
+                      high = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
         x = _mm512_permutex2var_pd(t0, low, t2);
         z = _mm512_permutex2var_pd(t0, high, t2);
         y = _mm512_permutex2var_pd(t1, low, t3);
@@ -155,14 +160,18 @@ class BasicSpeciesStore {
           _mm_store_ps(records_[index[l]].v, l < 4 ? _mm256_castps256_ps128(r[l]) : _mm256_extractf128_ps(r[l - 4], 1));
       } else {
         const __m512d a = t - Batch(clock_origin_);
-        const __m512d xy0 = _mm512_unpacklo_pd(x, y), xy1 = _mm512_unpackhi_pd(x, y);  // x0 y0 x2 y2 ... | x1 y1 x3 y3 ...
-        const __m512d za0 = _mm512_unpacklo_pd(z, a), za1 = _mm512_unpackhi_pd(z, a);  // z0 a0 z2 a2 ... | z1 a1 z3 a3 ...
-        const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), second = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
+        const __m512d xy0 = _mm512_unpacklo_pd(x, y),
+                      xy1 = _mm512_unpackhi_pd(x, y);  // x0 y0 x2 y2 ... | x1 y1 x3 y3 ...
+        const __m512d za0 = _mm512_unpacklo_pd(z, a),
+                      za1 = _mm512_unpackhi_pd(z, a);  // z0 a0 z2 a2 ... | z1 a1 z3 a3 ...
+        const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11),
+                      second = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
         const __m512d r[4] = {_mm512_permutex2var_pd(xy0, first, za0), _mm512_permutex2var_pd(xy1, first, za1),
                               _mm512_permutex2var_pd(xy0, second, za0), _mm512_permutex2var_pd(xy1, second, za1)};
         for (std::size_t l = 0; l < count; ++l) {  // records 0, 2 | 1, 3 | 4, 6 | 5, 7
           const __m512d& pair = r[(l & 1u) + 2 * (l / 4)];
-          _mm256_store_pd(records_[index[l]].v, (l / 2) % 2 == 0 ? _mm512_castpd512_pd256(pair) : _mm512_extractf64x4_pd(pair, 1));
+          _mm256_store_pd(records_[index[l]].v,
+                          (l / 2) % 2 == 0 ? _mm512_castpd512_pd256(pair) : _mm512_extractf64x4_pd(pair, 1));
         }
       }
     } else

@@ -8,11 +8,21 @@ struct SymTensor {
   double xx = 0.0, yy = 0.0, zz = 0.0, xy = 0.0, xz = 0.0, yz = 0.0;
 
   constexpr SymTensor& operator+=(const SymTensor& o) noexcept {
-    xx += o.xx; yy += o.yy; zz += o.zz; xy += o.xy; xz += o.xz; yz += o.yz;
+    xx += o.xx;
+    yy += o.yy;
+    zz += o.zz;
+    xy += o.xy;
+    xz += o.xz;
+    yz += o.yz;
     return *this;
   }
   constexpr SymTensor& operator*=(double s) noexcept {
-    xx *= s; yy *= s; zz *= s; xy *= s; xz *= s; yz *= s;
+    xx *= s;
+    yy *= s;
+    zz *= s;
+    xy *= s;
+    xz *= s;
+    yz *= s;
     return *this;
   }
   [[nodiscard]] constexpr double trace() const noexcept { return xx + yy + zz; }

@@ -21,8 +21,8 @@ struct LagrangianShear {
   static constexpr StepPhase phase = StepPhase::around_collisions;
   static constexpr const char* name = "lagrangian-shear";
 
-  double rate = 0.0;            // a (1 / time)
-  std::vector<double> masses;   // m_i of the species, in scene order
+  double rate = 0.0;           // a (1 / time)
+  std::vector<double> masses;  // m_i of the species, in scene order
 
   [[nodiscard]] std::string explanation() const {
     return "uniform shear flow: inertial force V_x -= a V_y dt in free flight (O(N) per step), pressure tensor "

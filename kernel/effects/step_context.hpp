@@ -29,10 +29,10 @@ namespace granmc {
 enum class StepPhase { free_flight, after_collisions, in_collision, around_collisions };
 
 struct StepContext {
-  double dt = 0.0;                 // step length, scene time
-  double twice_energy = 0.0;       // sum_i m_i sum_k |c_k|^2 (stored units) now
-  double twice_energy_loss = 0.0;  // lost in this step's collision stage (0 in the free_flight phase):
-                                   // before the collisions the stored energy was twice_energy + this
+  double dt = 0.0;                    // step length, scene time
+  double twice_energy = 0.0;          // sum_i m_i sum_k |c_k|^2 (stored units) now
+  double twice_energy_loss = 0.0;     // lost in this step's collision stage (0 in the free_flight phase):
+                                      // before the collisions the stored energy was twice_energy + this
   const RandomStream* rng = nullptr;  // the replica's stream, for effects that draw (state.step is the step)
 };
 

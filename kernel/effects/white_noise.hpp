@@ -22,8 +22,8 @@ struct WhiteNoise {
   static constexpr StepPhase phase = StepPhase::after_collisions;
   static constexpr const char* name = "white-noise";
 
-  double beta = 0.0;            // velocity diffusion coefficient (velocity^2 / time)
-  std::vector<double> masses;   // m_i of the species, in scene order
+  double beta = 0.0;           // velocity diffusion coefficient (velocity^2 / time)
+  std::vector<double> masses;  // m_i of the species, in scene order
 
   [[nodiscard]] std::string explanation() const {
     return "white noise after each collision stage (splitting, O(N) per step)";

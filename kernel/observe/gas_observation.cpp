@@ -4,7 +4,6 @@
 
 #include "kernel/observe/speed_histogram.hpp"
 
-
 namespace granmc {
 
 template <class Real>
@@ -25,7 +24,8 @@ GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& mome
   return t;
 }
 
-Observed record_observation(const Scene& scene, const VelocityScale& scale, const std::vector<SpeciesMoments>& about_origin,
+Observed record_observation(const Scene& scene, const VelocityScale& scale,
+                            const std::vector<SpeciesMoments>& about_origin,
                             const std::vector<SpeciesMoments>& about_flow, ReplicaSeries& series) {
   const double n = total_density(scene);
   const GasTotals totals = gas_totals(scene, about_origin);

@@ -3,8 +3,8 @@
 #include <vector>
 
 #include "kernel/core/scene.hpp"
-#include "kernel/observe/moments.hpp"
 #include "kernel/observe/gas_series.hpp"
+#include "kernel/observe/moments.hpp"
 #include "kernel/schemes/gas_state.hpp"
 
 namespace granmc {
@@ -31,7 +31,8 @@ struct Observed {
 /// Appends the temperatures, cumulants and momentum of one observation to `series`, from the moments of
 /// every species about the origin and about the flow velocity (the part of observe_gas that needs no
 /// particle; a system spread over ranks sums its moments first, schemes/spread_dsmc.hpp).
-Observed record_observation(const Scene& scene, const VelocityScale& scale, const std::vector<SpeciesMoments>& about_origin,
+Observed record_observation(const Scene& scene, const VelocityScale& scale,
+                            const std::vector<SpeciesMoments>& about_origin,
                             const std::vector<SpeciesMoments>& about_flow, ReplicaSeries& series);
 
 /// Appends one observation of `state` to `series` (series.species must have one entry per species); with

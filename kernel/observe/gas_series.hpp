@@ -28,10 +28,10 @@ struct SpeciesSeries {
 
 /// What an intruder replica records (method "gillespie", 002).
 struct IntruderSeries {
-  std::vector<double> velocity;           // v1 at each sample time (1D)
-  std::vector<double> speed_counts;       // histogram of |v1| over the stationary samples (output.histogram,
-                                          // radius in velocity units)
-  std::uint64_t sampling_attempts = 0;    // rejection attempts for the colliding bath velocities
+  std::vector<double> velocity;         // v1 at each sample time (1D)
+  std::vector<double> speed_counts;     // histogram of |v1| over the stationary samples (output.histogram,
+                                        // radius in velocity units)
+  std::uint64_t sampling_attempts = 0;  // rejection attempts for the colliding bath velocities
   // The needle (002 sec. 3.2) also counts its impact-point attempts in sampling_attempts.
   std::vector<double> velocity_y;         // needle: v1_y at each sample time (velocity holds v1_x)
   std::vector<double> angular_velocity;   // needle: omega at each sample time
@@ -48,28 +48,28 @@ struct IntruderSeries {
 inline constexpr double energy_balance_tolerance = 1e-10;
 
 struct ReplicaSeries {
-  std::vector<double> temperature;         // mixture T = sum_i x_i T_i (intruder: T = M v1^2 per degree
-                                           // of freedom)
-  std::vector<double> log_temperature;     // ln T
+  std::vector<double> temperature;      // mixture T = sum_i x_i T_i (intruder: T = M v1^2 per degree
+                                        // of freedom)
+  std::vector<double> log_temperature;  // ln T
   std::vector<SpeciesSeries> species;
-  std::vector<Vec3> momentum;              // total momentum sum_i m_i sum_k V_k (scene units); gas only
-  std::vector<double> momentum_relative;   // |P| / sqrt(M_total 2 E_kin): centre-of-mass speed / rms speed
-  std::vector<double> collisions;          // accepted collisions since t = 0, at each sample
+  std::vector<Vec3> momentum;                  // total momentum sum_i m_i sum_k V_k (scene units); gas only
+  std::vector<double> momentum_relative;       // |P| / sqrt(M_total 2 E_kin): centre-of-mass speed / rms speed
+  std::vector<double> collisions;              // accepted collisions since t = 0, at each sample
   std::vector<std::uint64_t> pair_collisions;  // accepted collisions per ordered species pair (i, j),
                                                // in the order i * species + j, whole run
-  std::uint64_t histogram_samples = 0;     // samples added to the speed histograms (gas or intruder)
-  std::uint64_t candidates = 0;            // candidate pairs tested
-  std::uint64_t majorant_updates = 0;      // times omega_max (U_max for the event scheme) was raised
-  std::uint64_t majorant_violations = 0;   // event scheme: candidates whose relative speed exceeded the
-                                           // U_max their waiting time was drawn with (schemes/event_white_noise.hpp)
-  std::vector<double> majorant_growth;     // per ordered pair: final / initial omega_max (stored units)
+  std::uint64_t histogram_samples = 0;         // samples added to the speed histograms (gas or intruder)
+  std::uint64_t candidates = 0;                // candidate pairs tested
+  std::uint64_t majorant_updates = 0;          // times omega_max (U_max for the event scheme) was raised
+  std::uint64_t majorant_violations = 0;       // event scheme: candidates whose relative speed exceeded the
+                                          // U_max their waiting time was drawn with (schemes/event_white_noise.hpp)
+  std::vector<double> majorant_growth;  // per ordered pair: final / initial omega_max (stored units)
   // Shear runs (000 secs. 2-3; observe/pressure_tensor.hpp), each at every sample time:
   std::vector<SymTensor> pressure_kinetic;      // P^k / (n T) at the sample (000 eq. 17)
   std::vector<SymTensor> pressure_collisional;  // P^c / (n T) averaged since the previous sample (eq. 18);
                                                 // zero at t = 0 and in the Boltzmann limit
   std::vector<double> reduced_shear_rate;       // a* = a / nu, nu = sqrt(pi) n sigma_12^2 v_0 (000 Fig. 10)
-  std::uint64_t rescales = 0;              // velocity rescalings (long cooling runs)
-  double momentum_removed_relative = 0.0;  // sum over rescalings of the removed |P| / sqrt(M 2 E)
+  std::uint64_t rescales = 0;                   // velocity rescalings (long cooling runs)
+  double momentum_removed_relative = 0.0;       // sum over rescalings of the removed |P| / sqrt(M 2 E)
   // Time-stepped gas (schemes/dsmc.hpp): the largest |E_tracked / E_summed - 1| over the sample times, where
   // E_tracked is the step's energy bookkeeping (start, minus collisional losses, plus each effect's returned
   // change) and E_summed = sum_i m_i sum_k |c_k|^2 summed afresh; closes to rounding when every effect
@@ -79,11 +79,11 @@ struct ReplicaSeries {
 };
 
 struct RunResult {
-  std::vector<double> times;               // sample times
+  std::vector<double> times;  // sample times
   std::vector<std::string> species_names;
-  std::vector<ReplicaSeries> replicas;     // in replica order
-  int threads = 1;                         // OpenMP threads (of rank 0 over MPI)
-  int ranks = 1;                           // MPI ranks the replicas were spread over (1 without MPI)
+  std::vector<ReplicaSeries> replicas;  // in replica order
+  int threads = 1;                      // OpenMP threads (of rank 0 over MPI)
+  int ranks = 1;                        // MPI ranks the replicas were spread over (1 without MPI)
 };
 
 }  // namespace granmc

@@ -12,18 +12,19 @@ SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3&
   // particle, a third of a cooling-state run with 40 samples: docs/performance.md).
   LaneCompensatedSum s2, s4, s6, px, py, pz;
   const SimdDouble cx(centre.x), cy(centre.y), cz(centre.z);
-  for_each_velocity_lanes(store, first, last,
-                          [&](const SimdDouble& x, const SimdDouble& y, const SimdDouble& z, const SimdDouble& in_range) {
-                            const SimdDouble dx = x - cx, dy = y - cy, dz = z - cz;
-                            const SimdDouble c2 = in_range * (dx * dx + dy * dy + dz * dz);
-                            const SimdDouble c4 = c2 * c2;
-                            s2.add(c2);
-                            s4.add(c4);
-                            s6.add(c4 * c2);
-                            px.add(x);
-                            py.add(y);
-                            pz.add(z);
-                          });
+  for_each_velocity_lanes(
+      store, first, last,
+      [&](const SimdDouble& x, const SimdDouble& y, const SimdDouble& z, const SimdDouble& in_range) {
+        const SimdDouble dx = x - cx, dy = y - cy, dz = z - cz;
+        const SimdDouble c2 = in_range * (dx * dx + dy * dy + dz * dz);
+        const SimdDouble c4 = c2 * c2;
+        s2.add(c2);
+        s4.add(c4);
+        s6.add(c4 * c2);
+        px.add(x);
+        py.add(y);
+        pz.add(z);
+      });
   SpeciesMoments m;
   m.particles = last - first;
   m.sum_c2 = s2.value();

@@ -18,18 +18,19 @@ SymTensor reduced_kinetic_pressure(const Scene& scene, const BasicGasState<Real>
   const SimdDouble fx(flow.x), fy(flow.y), fz(flow.z);
   for (std::size_t i = 0; i < state.species.size(); ++i) {
     const double m = scene.species[i].mass;
-    for_each_velocity_lanes(state.species[i], 0, state.species[i].size(),
-                            [&](const SimdDouble& x, const SimdDouble& y, const SimdDouble& z, const SimdDouble& in_range) {
-                              const SimdDouble w = m * in_range;  // the terms of weighted_dyad(m, c - flow)
-                              const SimdDouble dx = x - fx, dy = y - fy, dz = z - fz;
-                              const SimdDouble wx = w * dx, wy = w * dy, wz = w * dz;
-                              xx.add(wx * dx);
-                              yy.add(wy * dy);
-                              zz.add(wz * dz);
-                              xy.add(wx * dy);
-                              xz.add(wx * dz);
-                              yz.add(wy * dz);
-                            });
+    for_each_velocity_lanes(
+        state.species[i], 0, state.species[i].size(),
+        [&](const SimdDouble& x, const SimdDouble& y, const SimdDouble& z, const SimdDouble& in_range) {
+          const SimdDouble w = m * in_range;  // the terms of weighted_dyad(m, c - flow)
+          const SimdDouble dx = x - fx, dy = y - fy, dz = z - fz;
+          const SimdDouble wx = w * dx, wy = w * dy, wz = w * dz;
+          xx.add(wx * dx);
+          yy.add(wy * dy);
+          zz.add(wz * dz);
+          xy.add(wx * dy);
+          xz.add(wx * dz);
+          yz.add(wy * dz);
+        });
   }
   const SymTensor sum{xx.value(), yy.value(), zz.value(), xy.value(), xz.value(), yz.value()};
   return (3.0 / sum.trace()) * sum;

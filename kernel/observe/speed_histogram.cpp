@@ -19,7 +19,8 @@ double histogram_speed_unit(const Scene& scene, const VelocityScale& scale, doub
 }
 
 template <class Real>
-void add_speeds(const BasicSpeciesStore<Real>& store, double unit, double radius, std::vector<double>& counts) noexcept {
+void add_speeds(const BasicSpeciesStore<Real>& store, double unit, double radius,
+                std::vector<double>& counts) noexcept {
   const double per_shell = static_cast<double>(counts.size()) / (radius * unit);
   store.for_each_velocity([&](const Vec3& c) {
     const double shell = norm(c) * per_shell;

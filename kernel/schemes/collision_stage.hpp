@@ -139,7 +139,8 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   // The candidates' particle indices from their ranges lane by lane (uniform_indices) when every range is
   // below 2^32, else one by one (uniform_index): the same values.
   bool narrow = true;
-  for (std::size_t q = 0; q < n_pairs; ++q) narrow = narrow && std::max(range_k[q], range_l[q]) < (std::uint64_t{1} << 32);
+  for (std::size_t q = 0; q < n_pairs; ++q)
+    narrow = narrow && std::max(range_k[q], range_l[q]) < (std::uint64_t{1} << 32);
   std::array<std::uint32_t, batch> ranges_k{}, ranges_l{};
   if (one_pair && narrow) {
     ranges_k.fill(static_cast<std::uint32_t>(range_k[0]));
@@ -161,14 +162,16 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     auto pick = [&](std::size_t word) { return std::span<const std::uint32_t, batch>(w[word].data(), batch); };
     const auto draw = [](std::uint64_t b) { return batch + b; };
     if constexpr (!one_pair) {
-      for (std::uint64_t b = 0; b < m; ++b) {  // the next candidate's pair, without replacement: a uniformly random interleaving
+      for (std::uint64_t b = 0; b < m;
+           ++b) {  // the next candidate's pair, without replacement: a uniformly random interleaving
         const double r = uniform_open(w[3][draw(b)]) * static_cast<double>(total - (s0 + b));
         // q = the number of cumulative counts <= r, without branches (a loop here mispredicted 0.86 times
         // per candidate, callgrind, docs/performance.md). r < total - s = candidates left, so q is a pair
         // with candidates left. The same q as subtracting the counts from r one by one: r < 2^53, so r minus
         // an integer below it is exact.
         std::size_t q = 0;
-        for (std::size_t k = 0; k + 1 < max_pairs; ++k) q += static_cast<std::size_t>(r >= static_cast<double>(cumulative[k]));
+        for (std::size_t k = 0; k + 1 < max_pairs; ++k)
+          q += static_cast<std::size_t>(r >= static_cast<double>(cumulative[k]));
         for (std::size_t k = 0; k + 1 < max_pairs; ++k) cumulative[k] -= static_cast<std::int64_t>(k >= q);
         d.qs[b] = static_cast<std::uint8_t>(q);
         ranges_k[b] = static_cast<std::uint32_t>(range_k[q]);  // used only when narrow
@@ -300,7 +303,8 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
         const PairCoefficients& p = one_pair ? only_pair : pairs[q];
         if constexpr (!one_pair) threshold[b] = d.accept[b] * majorant[q];
         if constexpr (Shift::active) {
-          static_assert(std::is_same_v<Kernel, HardSphere>, "the Enskog shift runs with hard spheres (setup/run_plan.hpp)");
+          static_assert(std::is_same_v<Kernel, HardSphere>,
+                        "the Enskog shift runs with hard spheres (setup/run_plan.hpp)");
           const Vec3 sigma{d.sx[b], d.sy[b], d.sz[b]};
           const Vec3 g = shift.relative_velocity(d.pk[b].velocity(), d.pl[b].velocity(), sigma, p);
           const double terms = std::abs(g.x * sigma.x) + std::abs(g.y * sigma.y) + std::abs(g.z * sigma.z);
@@ -324,7 +328,8 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
         if constexpr (Shift::active) {
           om = SimdDouble::load_unaligned(&omega[k]);
         } else {
-          const SimdDouble pre = one_pair ? SimdDouble(only_pair.rate_prefactor) : SimdDouble::load_unaligned(&prefactor[k]);
+          const SimdDouble pre =
+              one_pair ? SimdDouble(only_pair.rate_prefactor) : SimdDouble::load_unaligned(&prefactor[k]);
           om = pre * kernel.mean_rate(SimdDouble::load_unaligned(&g2[k])) * (1.0 + rounding_margin);
         }
         passes |= not_greater_bits(thr, om) << k;
@@ -339,8 +344,9 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
   // misses, the last ones waited a memory latency (as in the event scheme, docs/performance.md).
   std::array<Drawn, 2> drawn{};  // initialised: a last, partial batch converts all lanes
   std::array<std::uint8_t, lanes> which;
-  Lanes nx, ny, nz;                                      // the directions n of the candidates that passed the screen
-  Lanes gx, gy, gz, g_square, sigma_x, sigma_y, sigma_z, g_sigma;  // and, for those, g and |g|^2, then sigma-hat and g.sigma
+  Lanes nx, ny, nz;  // the directions n of the candidates that passed the screen
+  Lanes gx, gy, gz, g_square, sigma_x, sigma_y, sigma_z,
+      g_sigma;  // and, for those, g and |g|^2, then sigma-hat and g.sigma
   if (total > 0) {
     draw_batch(drawn[0], 0, std::min(batch, total));
     for (std::uint64_t b = 0; b < std::min(batch, total); ++b) {
@@ -423,12 +429,14 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
 /// candidates overlap and the acceptance run in SIMD (perf/bench_collisions.cpp, docs/performance.md).
 template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift, class Real = double>
 void collide_step(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
-                  std::span<const std::uint64_t> candidates, const RandomStream& rng,
-                  std::span<CollisionTally> tallies, const Kernel& kernel = {}, const Shift& shift = {}) noexcept {
+                  std::span<const std::uint64_t> candidates, const RandomStream& rng, std::span<CollisionTally> tallies,
+                  const Kernel& kernel = {}, const Shift& shift = {}) noexcept {
   if (pairs.size() == 1)
-    detail::collide_batches<Kernel, Shift, true, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
+    detail::collide_batches<Kernel, Shift, true, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel,
+                                                        shift);
   else
-    detail::collide_batches<Kernel, Shift, false, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
+    detail::collide_batches<Kernel, Shift, false, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel,
+                                                         shift);
 }
 
 }  // namespace granmc

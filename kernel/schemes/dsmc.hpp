@@ -44,8 +44,8 @@ struct collision_shift {
 };
 template <class First, class... Rest>
 struct collision_shift<First, Rest...> {
-  using type = std::conditional_t<First::phase == StepPhase::in_collision, First,
-                                  typename collision_shift<Rest...>::type>;
+  using type =
+      std::conditional_t<First::phase == StepPhase::in_collision, First, typename collision_shift<Rest...>::type>;
 };
 }  // namespace detail
 
@@ -182,8 +182,10 @@ class BasicDsmc {
 
   /// The contact-velocity shift of this step in stored units (collide/enskog_shear_shift.hpp), or none.
   Shift step_shift() const noexcept {
-    if constexpr (Shift::active) return std::get<Shift>(effects_).in_stored_units(state_.scale.u());
-    else return {};
+    if constexpr (Shift::active)
+      return std::get<Shift>(effects_).in_stored_units(state_.scale.u());
+    else
+      return {};
   }
 
   static void add(CollisionTally& to, const CollisionTally& from) noexcept {
@@ -251,8 +253,8 @@ class BasicDsmc {
   std::vector<PairCoefficients> pairs_;
   std::tuple<Effects...> effects_;
   BasicGasState<Real> state_;
-  std::vector<double> omega_max_;  // per ordered pair, units of u
-  std::vector<double> carried_;    // fractional candidates carried to the next step
+  std::vector<double> omega_max_;          // per ordered pair, units of u
+  std::vector<double> carried_;            // fractional candidates carried to the next step
   std::vector<std::uint64_t> candidates_;  // this step's candidates per pair
   CollisionTally total_;
   std::vector<CollisionTally> pair_totals_;
@@ -263,7 +265,7 @@ class BasicDsmc {
   double log_temperature0_ = 0.0;
   double momentum_removed_ = 0.0;
   std::uint64_t rescales_ = 0;
-  SymTensor transfer_integral_;   // time integral of P^c / (n T) since transfer_since_
+  SymTensor transfer_integral_;  // time integral of P^c / (n T) since transfer_since_
   double transfer_since_ = 0.0;
   double owed_ = 0.0;  // the half step the around_collisions effects owe since the last step (scene time)
 };

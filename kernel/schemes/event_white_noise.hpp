@@ -35,18 +35,18 @@
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
-#include "kernel/core/simd.hpp"
 #include "kernel/core/scene.hpp"
+#include "kernel/core/simd.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
 
 namespace granmc {
 
 struct EventTally {
-  std::uint64_t candidates = 0;          // candidate pairs (real + fictitious collisions)
-  std::uint64_t collisions = 0;          // real collisions
-  std::uint64_t majorant_updates = 0;    // raises of U_max at steps 2.7 and 2.10
-  std::uint64_t majorant_violations = 0; // candidates with |v_i - v_j| above the U_max they were drawn with
+  std::uint64_t candidates = 0;           // candidate pairs (real + fictitious collisions)
+  std::uint64_t collisions = 0;           // real collisions
+  std::uint64_t majorant_updates = 0;     // raises of U_max at steps 2.7 and 2.10
+  std::uint64_t majorant_violations = 0;  // candidates with |v_i - v_j| above the U_max they were drawn with
 };
 
 enum class Thinning { fictitious, real, violation };
@@ -151,9 +151,9 @@ class BasicEventWhiteNoise {
   static constexpr std::size_t batch_size = 32;
   struct DrawBatch {
     std::array<std::size_t, batch_size> i{}, j{};
-    std::array<double, batch_size> wait{};       // -log u of step 2.1: the waiting time is wait / rate
-    std::array<double, batch_size> threshold{};  // step 2.8: real iff threshold < |v_i - v_j| / U_max
-    std::array<double, batch_size> ex{}, ey{}, ez{};            // e of step 2.9
+    std::array<double, batch_size> wait{};            // -log u of step 2.1: the waiting time is wait / rate
+    std::array<double, batch_size> threshold{};       // step 2.8: real iff threshold < |v_i - v_j| / U_max
+    std::array<double, batch_size> ex{}, ey{}, ez{};  // e of step 2.9
     // Draw k's normals: pairs k, batch_size + k and 2 batch_size + k, so that the same component of
     // consecutive draws is contiguous (candidates_in_simd loads them a register at a time)
     std::array<double, 3 * batch_size> normal1{}, normal2{};
@@ -213,8 +213,8 @@ class BasicEventWhiteNoise {
     }
     negative_log_in_place(std::span(batch.wait));
     kernel_.acceptance_thresholds(std::span(batch.threshold));
-    unit_vectors(std::span<const double, batch_size>(e1), std::span<const double, batch_size>(e2),
-                 std::span(batch.ex), std::span(batch.ey), std::span(batch.ez));
+    unit_vectors(std::span<const double, batch_size>(e1), std::span<const double, batch_size>(e2), std::span(batch.ex),
+                 std::span(batch.ey), std::span(batch.ez));
     if (noise_ != 0.0)
       standard_normal_pairs(std::span<const double, 3 * batch_size>(u1), std::span<const double, 3 * batch_size>(u2),
                             std::span(batch.normal1), std::span(batch.normal2));
@@ -322,7 +322,8 @@ class BasicEventWhiteNoise {
     const SimdDouble g2 = dx * dx + dy * dy + dz * dz;
     const SimdDouble accept = SimdDouble::load_unaligned(&batch.threshold[k]) * majorant_, accept2 = accept * accept;
     const auto fictitious = g2 < accept2 * (1.0 - rounding_margin);
-    const auto certain = (g2 > accept2 * (1.0 + rounding_margin)) & (g2 < SimdDouble(majorant2_ * (1.0 - rounding_margin)));
+    const auto certain =
+        (g2 > accept2 * (1.0 + rounding_margin)) & (g2 < SimdDouble(majorant2_ * (1.0 - rounding_margin)));
     const std::uint64_t real = lane_bits(certain);
     const std::uint64_t stop = (std::uint64_t{1} << active) | ~lane_bits(fictitious | certain) |
                                ~lane_bits((far2(xi, yi, zi) < below) & (far2(xj, yj, zj) < below));
@@ -347,8 +348,10 @@ class BasicEventWhiteNoise {
           break;
         }
       }
-      xi = SimdDouble::load_aligned(ax.data()), yi = SimdDouble::load_aligned(ay.data()), zi = SimdDouble::load_aligned(az.data());
-      xj = SimdDouble::load_aligned(bx.data()), yj = SimdDouble::load_aligned(by.data()), zj = SimdDouble::load_aligned(bz.data());
+      xi = SimdDouble::load_aligned(ax.data()), yi = SimdDouble::load_aligned(ay.data()),
+      zi = SimdDouble::load_aligned(az.data());
+      xj = SimdDouble::load_aligned(bx.data()), yj = SimdDouble::load_aligned(by.data()),
+      zj = SimdDouble::load_aligned(bz.data());
     }
     store.store_lanes(&batch.i[k], done, xi, yi, zi, t);
     store.store_lanes(&batch.j[k], done, xj, yj, zj, t);
@@ -372,11 +375,15 @@ class BasicEventWhiteNoise {
     Vec3 vi = store.velocity(i), vj = store.velocity(j);
     if constexpr (!Kernel::constant_rate) {
       const double drawn_with = majorant_, drawn_with2 = majorant2_;
-      raise_majorant(vi, vj);  // step 2.7
+      raise_majorant(vi, vj);                                                           // step 2.7
       switch (thinning(norm2(vi - vj), batch.threshold[k], drawn_with, drawn_with2)) {  // step 2.8
-        case Thinning::fictitious: return;
-        case Thinning::violation: ++tally_.majorant_violations; break;
-        case Thinning::real: break;
+        case Thinning::fictitious:
+          return;
+        case Thinning::violation:
+          ++tally_.majorant_violations;
+          break;
+        case Thinning::real:
+          break;
       }
     }
     isotropic_scattering(vi, vj, {batch.ex[k], batch.ey[k], batch.ez[k]}, alpha_);  // step 2.9
@@ -418,14 +425,14 @@ class BasicEventWhiteNoise {
   State state_;
   double alpha_;
   std::size_t particles_;
-  double noise_ = 0.0;           // 2 beta / u^2
-  double rate_prefactor_ = 0.0;  // pi_hat / U_max^lambda
-  double majorant_ = 0.0;        // U_max, stored units
-  double majorant2_ = 0.0;       // U_max^2
-  double candidate_rate_ = 0.0;  // pi_hat, per unit time
-  Vec3 reference_;               // V of the majorant, stored units
-  std::uint64_t draws_ = 0;      // waiting-time draws so far (the random counter)
-  std::uint64_t syncs_ = 0;      // sample-time updates so far
+  double noise_ = 0.0;                // 2 beta / u^2
+  double rate_prefactor_ = 0.0;       // pi_hat / U_max^lambda
+  double majorant_ = 0.0;             // U_max, stored units
+  double majorant2_ = 0.0;            // U_max^2
+  double candidate_rate_ = 0.0;       // pi_hat, per unit time
+  Vec3 reference_;                    // V of the majorant, stored units
+  std::uint64_t draws_ = 0;           // waiting-time draws so far (the random counter)
+  std::uint64_t syncs_ = 0;           // sample-time updates so far
   std::array<DrawBatch, 2> batches_;  // the draws from draws_ on: slot_ of batches_[current_], then the other
   unsigned current_ = 0;
   std::size_t slot_ = 0;

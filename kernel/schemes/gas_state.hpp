@@ -13,8 +13,8 @@ template <class Real>
 struct BasicGasState {
   std::vector<BasicSpeciesStore<Real>> species;  // stored velocities c, V = u c
   VelocityScale scale;
-  double time = 0.0;                  // scene time
-  std::uint64_t step = 0;             // time steps taken (a random-stream counter)
+  double time = 0.0;       // scene time
+  std::uint64_t step = 0;  // time steps taken (a random-stream counter)
 };
 
 using GasState = BasicGasState<double>;

@@ -32,7 +32,8 @@ BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng
 }
 
 template void maxwellian_velocities(SpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, double) noexcept;
-template void maxwellian_velocities(FloatSpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, double) noexcept;
+template void maxwellian_velocities(FloatSpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t,
+                                    double) noexcept;
 template GasState maxwellian_state(const Scene&, const RandomStream&);
 template FloatGasState maxwellian_state(const Scene&, const RandomStream&);
 

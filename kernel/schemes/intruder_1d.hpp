@@ -51,8 +51,8 @@ ReplicaSeries run_intruder_1d(const Scene& scene, std::uint64_t replica, const s
       const RandomBlock u = rng.block(RngPurpose::intruder_event, 0, event, attempt);
       if (right ? bath.try_sample_right(v1, u, v) : bath.try_sample_right(-v1, u, v)) break;
     }
-    if (!right) v = -v;       // g_-(v; v1) = g_+(-v; -v1)
-    v1 += kick * (v - v1);    // 002 eq. (21)
+    if (!right) v = -v;     // g_-(v; v1) = g_+(-v; -v1)
+    v1 += kick * (v - v1);  // 002 eq. (21)
     ++event;
   }
   return record.finish(record.sampling_attempts());

@@ -136,7 +136,7 @@ ReplicaSeries run_intruder_dsmc_1d(const Scene& scene, std::uint64_t replica, co
       if (uniform_open(u[2]) < 0.5) x = -x;
     }
     if (uniform_open(u[3]) * (c + std::fabs(x)) < std::fabs(sqrt_a * v1 - x)) {  // |v1 - v| / (|v1| + |v|)
-      v1 += kick * (x / sqrt_a - v1);  // 002 eq. (21)
+      v1 += kick * (x / sqrt_a - v1);                                            // 002 eq. (21)
       ++collisions;
     }
     clock += gap(v1);

@@ -2,11 +2,11 @@
 // Runs the replicas of a scene in parallel (OpenMP), each from its own random stream, and collects
 // their series in replica order: the result is the same for any thread count. With RunOptions'
 // replica_offset and replica_stride it runs only its share (MPI ranks) and leaves the rest empty.
+#include <omp.h>
+
 #include <cstdint>
 #include <exception>
 #include <vector>
-
-#include <omp.h>
 
 #include "kernel/core/scene.hpp"
 #include "kernel/observe/gas_series.hpp"

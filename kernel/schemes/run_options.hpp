@@ -6,8 +6,8 @@
 namespace granmc {
 
 struct RunOptions {
-  int threads = 0;                     // OpenMP threads for the replicas; 0: the OpenMP default
-  std::function<void()> on_sample;     // called after each observation of each replica, from any thread
+  int threads = 0;                  // OpenMP threads for the replicas; 0: the OpenMP default
+  std::function<void()> on_sample;  // called after each observation of each replica, from any thread
   // This process runs the replicas r with r % replica_stride == replica_offset (MPI ranks,
   // docs/scaling.md); the others stay default-constructed in RunResult::replicas for the caller to fill.
   // The defaults run all replicas.

@@ -229,21 +229,24 @@ class SpreadDsmc {
     twice_energy_ -= tally.twice_energy_loss;
     const StepContext after{dt, twice_energy_, tally.twice_energy_loss, &rng_};
     if (scene_.thermostat.kind == ThermostatKind::gaussian)
-      twice_energy_ += GaussianThermostat{scene_.thermostat.zeta_is_cooling_rate, scene_.thermostat.zeta}.apply(state_, after);
+      twice_energy_ +=
+          GaussianThermostat{scene_.thermostat.zeta_is_cooling_rate, scene_.thermostat.zeta}.apply(state_, after);
     if (scene_.thermostat.kind == ThermostatKind::white_noise) twice_energy_ += white_noise(after);
     total_.candidates += tally.candidates;
     total_.collisions += tally.collisions;
     total_.majorant_updates += tally.majorant_updates;
     total_.twice_energy_loss += tally.twice_energy_loss;
     ++state_.step;
-    if (twice_energy_ < reference_twice_energy_ / rescale_factor || twice_energy_ > reference_twice_energy_ * rescale_factor)
+    if (twice_energy_ < reference_twice_energy_ / rescale_factor ||
+        twice_energy_ > reference_twice_energy_ * rescale_factor)
       rescale();
   }
 
   /// Candidates [first, first + m) of the step: drawn, given their owners and waves (the same on every rank),
   /// then done wave by wave. Adds their energy losses to `loss_sum` in list order (as the one-process stage
   /// sums them); returns the number of waves.
-  std::uint32_t collide_segment(std::size_t first, std::size_t m, double& loss_sum, double (&counts)[2], double& above) {
+  std::uint32_t collide_segment(std::size_t first, std::size_t m, double& loss_sum, double (&counts)[2],
+                                double& above) {
     k_.resize(m);
     l_.resize(m);
     rk_.resize(m);
@@ -292,14 +295,16 @@ class SpreadDsmc {
     const auto R = static_cast<std::size_t>(size_);
     std::vector<std::vector<double>> out(R), in(R);
     std::vector<std::size_t> read(R);
-    std::vector<std::size_t> own;  // this rank's candidates of the wave (positions in queue_)
+    std::vector<std::size_t> own;    // this rank's candidates of the wave (positions in queue_)
     std::vector<RandomBlock> words;  // their blocks 2s + 1
     auto expect = [&](std::size_t from, std::size_t to, bool doing_k) {  // sizes both sides know
       for (auto& b : in) b.clear();
       for (std::size_t i = from; i < to; ++i) {
         const Queued& c = queue_[i];
-        if (doing_k && c.rk == me && c.rl != me) in[static_cast<std::size_t>(c.rl)].resize(in[static_cast<std::size_t>(c.rl)].size() + 3);
-        if (!doing_k && c.rl == me && c.rk != me) in[static_cast<std::size_t>(c.rk)].resize(in[static_cast<std::size_t>(c.rk)].size() + 3);
+        if (doing_k && c.rk == me && c.rl != me)
+          in[static_cast<std::size_t>(c.rl)].resize(in[static_cast<std::size_t>(c.rl)].size() + 3);
+        if (!doing_k && c.rl == me && c.rk != me)
+          in[static_cast<std::size_t>(c.rk)].resize(in[static_cast<std::size_t>(c.rk)].size() + 3);
       }
       std::fill(read.begin(), read.end(), 0);
     };
@@ -326,15 +331,18 @@ class SpreadDsmc {
                              : pull(in[static_cast<std::size_t>(c.rl)], read[static_cast<std::size_t>(c.rl)]);
         loss[c.j] = collide(words[o], vk, vl, counts, above);
         store().set_velocity(c.k - lo_, vk);
-        if (c.rl == me) store().set_velocity(c.l - lo_, vl);
-        else push(out[static_cast<std::size_t>(c.rl)], vl);
+        if (c.rl == me)
+          store().set_velocity(c.l - lo_, vl);
+        else
+          push(out[static_cast<std::size_t>(c.rl)], vl);
       }
       expect(from, to, false);
       ranks_.exchange(out, in);
       for (std::size_t i = from; i < to; ++i) {
         const Queued& c = queue_[i];
         if (c.rl == me && c.rk != me)
-          store().set_velocity(c.l - lo_, pull(in[static_cast<std::size_t>(c.rk)], read[static_cast<std::size_t>(c.rk)]));
+          store().set_velocity(c.l - lo_,
+                               pull(in[static_cast<std::size_t>(c.rk)], read[static_cast<std::size_t>(c.rk)]));
       }
     }
     ranks_.sum(loss);  // one nonzero per candidate: the owner's

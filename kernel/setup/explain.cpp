@@ -64,8 +64,8 @@ bool beyond_caches(const Scene& scene) {
 void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
   const CollisionConfig& c = scene.collision;
   char kernel[96];
-  std::snprintf(kernel, sizeof kernel, "one species, kernel rate |u|^lambda with lambda = %g, e uniform (001 eqs. 4, 8)",
-                c.lambda);
+  std::snprintf(kernel, sizeof kernel,
+                "one species, kernel rate |u|^lambda with lambda = %g, e uniform (001 eqs. 4, 8)", c.lambda);
   out.effects.push_back(kernel);
   if (plan.white_noise)
     out.effects.push_back("white noise by lazy Brownian updates at collision and sample times (001 eq. 23)");
@@ -81,8 +81,8 @@ void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
     temperature = std::max(temperature, theory::white_noise_steady_temperature(c.lambda, c.rate, c.restitution[0][0],
                                                                                scene.thermostat.beta, 0.0));
   const double majorant = 2.0 * expected_max_speed(n) * std::sqrt(temperature);
-  out.candidates = scene.run.replicas * scene.run.t_end * 2.0 * std::numbers::pi * c.rate * (n - 1.0) *
-                   std::pow(majorant, c.lambda);
+  out.candidates =
+      scene.run.replicas * scene.run.t_end * 2.0 * std::numbers::pi * c.rate * (n - 1.0) * std::pow(majorant, c.lambda);
   out.candidates_upper_bound = false;
   out.candidates_per_second = event_candidates_per_second(plan, beyond_caches(scene));
 }
@@ -175,14 +175,16 @@ void explain(const IntruderLinePlan& plan, const Scene& scene, PlanExplanation& 
 void explain(const NeedlePlan& plan, const Scene& scene, PlanExplanation& out) {
   explain_intruder(plan.bath.explanation, scene, out);
   out.effects.push_back("colliding bath velocities sampled exactly (no window)");
-  out.effects.push_back("needle of length L: event times from the integrated flux by Newton with a bisection "
-                        "fallback (002 eqs. 27-28), impact point sampled exactly (002 eq. 29)");
+  out.effects.push_back(
+      "needle of length L: event times from the integrated flux by Newton with a bisection "
+      "fallback (002 eqs. 27-28), impact point sampled exactly (002 eq. 29)");
 }
 
 void explain(const IntruderDsmcPlan& plan, const Scene& scene, PlanExplanation& out) {
   explain_intruder(std::visit([](const auto& bath) { return bath.explanation; }, plan.bath), scene, out);
-  out.effects.push_back("DSMC alternative (002 sec. 4): candidates at rho (|v1| + <|v|>) with the exact majorant "
-                        "|v1 - v| <= |v1| + |v|, bath velocities drawn from f");
+  out.effects.push_back(
+      "DSMC alternative (002 sec. 4): candidates at rho (|v1| + <|v|>) with the exact majorant "
+      "|v1 - v| <= |v1| + |v|, bath velocities drawn from f");
 }
 
 std::string storage_note(const StorageChoice& storage) {

@@ -12,17 +12,17 @@
 namespace granmc {
 
 struct PlanExplanation {
-  std::string instantiation;           // instantiation_name(plan, scene)
-  std::vector<std::string> effects;    // every effect and option that will act, in words
-  std::vector<std::string> absent;     // effects the scene does not name (not compiled into the run)
-  bool gas = true;                     // false for an intruder (no particle store)
-  std::size_t bytes_per_particle = 0;  // stored bytes per particle (gas)
-  std::uint64_t particle_bytes = 0;    // particle memory of the replicas in flight at once
-  int replicas_in_flight = 1;          // min(threads, replicas)
-  double candidates = 0.0;             // estimated candidate pairs, all replicas (gas)
-  double events = 0.0;                 // estimated collision events, all replicas (intruder)
-  bool candidates_upper_bound = false; // true when the estimate assumes T stays at T(0)
-  double candidates_per_second = 0.0;  // per thread, this machine's measured rate for such a run (gas)
+  std::string instantiation;            // instantiation_name(plan, scene)
+  std::vector<std::string> effects;     // every effect and option that will act, in words
+  std::vector<std::string> absent;      // effects the scene does not name (not compiled into the run)
+  bool gas = true;                      // false for an intruder (no particle store)
+  std::size_t bytes_per_particle = 0;   // stored bytes per particle (gas)
+  std::uint64_t particle_bytes = 0;     // particle memory of the replicas in flight at once
+  int replicas_in_flight = 1;           // min(threads, replicas)
+  double candidates = 0.0;              // estimated candidate pairs, all replicas (gas)
+  double events = 0.0;                  // estimated collision events, all replicas (intruder)
+  bool candidates_upper_bound = false;  // true when the estimate assumes T stays at T(0)
+  double candidates_per_second = 0.0;   // per thread, this machine's measured rate for such a run (gas)
 };
 
 /// Bytes of particle state per particle in the scene's storage precision (32 for double, 16 for float).

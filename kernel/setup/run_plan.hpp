@@ -57,7 +57,8 @@ struct EffectList {
 /// The time-stepped scheme's collision kernels (000 sec. 3 and its kernel form of 001).
 using SteppedKernelChoice = std::variant<HardSphere, MaxwellPseudomolecules, VariableHardSpheres>;
 /// Uniform shear flow: none, the inertial force (Boltzmann), or with the Enskog shift of the contact velocity.
-using ShearChoice = std::variant<EffectList<>, EffectList<LagrangianShear>, EffectList<LagrangianShear, EnskogShearShift>>;
+using ShearChoice =
+    std::variant<EffectList<>, EffectList<LagrangianShear>, EffectList<LagrangianShear, EnskogShearShift>>;
 /// What acts on the gas after the collisions: nothing, the Gaussian thermostat (with 003's relaxation term), or
 /// white noise.
 using ThermostatChoice = std::variant<EffectList<>, EffectList<GaussianThermostat>,
@@ -105,8 +106,8 @@ constexpr const char* spread_refusal() noexcept {
 
 /// Whether the dispatch compiles this product of time-stepped choices.
 template <class Kernel, class Shear, class Thermostat, class Storage, class Backend>
-inline constexpr bool stepped_supported = stepped_refusal<Kernel, Shear, Thermostat>() == nullptr &&
-                                          spread_refusal<Shear, Thermostat, Storage, Backend>() == nullptr;
+inline constexpr bool stepped_supported = stepped_refusal<Kernel, Shear, Thermostat>() ==
+                                          nullptr&& spread_refusal<Shear, Thermostat, Storage, Backend>() == nullptr;
 
 /// Time-stepped ESMC/DSMC of a gas (000 sec. 3; 001's time-stepped counterpart; 003).
 struct SteppedPlan {

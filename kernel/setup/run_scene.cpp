@@ -25,8 +25,8 @@ RunResult run_spread(const Scene& scene, const RunOptions& options) {
   result.species_names.push_back(scene.species[0].name);
   result.threads = 1;
   for (int r = 0; r < scene.run.replicas; ++r)
-    result.replicas.push_back(
-        run_spread_replica<Kernel>(scene, static_cast<std::uint64_t>(r), result.times, *options.spread, options.on_sample));
+    result.replicas.push_back(run_spread_replica<Kernel>(scene, static_cast<std::uint64_t>(r), result.times,
+                                                         *options.spread, options.on_sample));
   return result;
 }
 

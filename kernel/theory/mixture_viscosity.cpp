@@ -54,8 +54,7 @@ MixtureShearViscosity mixture_shear_viscosity(const MixtureParameters& mp, doubl
   const double T[2] = {state.gamma * T2, T2};
   const double* a = state.a2;
   // Enskog density of the packing fraction: phi = (pi/6) n sum_k x_k sigma_k^3.
-  const double n_enskog = 6.0 * phi /
-                          (pi * (x[0] * std::pow(mp.diameter[0], 3) + x[1] * std::pow(mp.diameter[1], 3)));
+  const double n_enskog = 6.0 * phi / (pi * (x[0] * std::pow(mp.diameter[0], 3) + x[1] * std::pow(mp.diameter[1], 3)));
   const double nE[2] = {x[0] * n_enskog, x[1] * n_enskog};
   const double r = reference == ViscosityReference::cooling ? 0.5 : 1.0;
   const double zeta = partial_cooling_rate(mp, 0, T[0], T[1], a[0], a[1]);
@@ -87,7 +86,8 @@ MixtureShearViscosity mixture_shear_viscosity(const MixtureParameters& mp, doubl
       const PairTerms p = pair_terms(mp, T, i, j);
       // Collisional transfer of f_i^(1) (viscosity.md, item 4): (4/5) phi chi (1 + alpha) eta^k for one species.
       e.transfer += 4.0 * pi / 15.0 * e.partial[i] * nE[j] * p.b * p.weight * p.sigma;
-      // Transfer across grad u by f^(0) f^(0), linear in a2_i (item 5): (384/(25 pi)) phi^2 chi (1+alpha)(1 - c0/32) eta0.
+      // Transfer across grad u by f^(0) f^(0), linear in a2_i (item 5): (384/(25 pi)) phi^2 chi (1+alpha)(1 - c0/32)
+      // eta0.
       e.gradient += sqrt_2pi / 60.0 * p.m_ij * (1.0 + mp.alpha[i][j]) * p.weight * p.sigma * p.sigma * nE[i] * nE[j] *
                     p.s * (8.0 - a[i] * p.u * p.u - a[j] * p.v * p.v);
     }

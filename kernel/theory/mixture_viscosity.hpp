@@ -20,8 +20,8 @@ struct MixtureShearViscosity {
   double partial[2] = {0.0, 0.0};  // eta_i^k, kinetic part carried by species i
   double kinetic = 0.0;            // eta^k = eta_1^k + eta_2^k (000 Fig. 10)
   double transfer = 0.0;           // collisional transfer of f^(1)
-  double gradient = 0.0;           // collisional transfer across the velocity gradient by f^(0) (3/5 kappa when elastic)
-  double total = 0.0;              // eta = kinetic + transfer + gradient (000 eq. 11, Figs. 7-9, 11-12)
+  double gradient = 0.0;  // collisional transfer across the velocity gradient by f^(0) (3/5 kappa when elastic)
+  double total = 0.0;     // eta = kinetic + transfer + gradient (000 eq. 11, Figs. 7-9, 11-12)
 };
 
 /// eta at mixture temperature T = x_1 T_1 + x_2 T_2 (x_i = n_i / n), in the units of mp.
