@@ -17,7 +17,7 @@
 #include "io/output_schema.hpp"
 #include "io/scene_file.hpp"
 #include "io/theory_json.hpp"
-#include "kernel/schemes/spread_dsmc.hpp"
+#include "kernel/schemes/rank_wave_backend.hpp"
 #include "kernel/setup/explain.hpp"
 #include "kernel/setup/run_plan.hpp"
 

@@ -46,7 +46,7 @@ struct JobResult {
 /// progress line shows on rank 0 when stderr is a terminal, unless `quiet`. Collective under MPI. Throws
 /// std::exception on failure; report it with run_failure.
 /// With plan.spread = Spread::particles, every replica is one system over all ranks instead
-/// (schemes/spread_dsmc.hpp), the replicas one after another on one thread per rank.
+/// (schemes/rank_wave_backend.hpp), the replicas one after another on one thread per rank.
 JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet);
 
 /// A failure during a run: one message and exit status 1. Over several MPI ranks the message names the rank

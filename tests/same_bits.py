@@ -9,7 +9,9 @@ that describe the machine or the build (wall_seconds, threads, version).
 A scene is shrunk to at most --particles particles over all species (each species by the same factor, so the
 density ratio holds) and --replicas replicas through a one-scene sweep file (`granmc sweep`), so the whole set
 takes minutes; the kernel, effects and storage that run are the scene's own. Scene files are the files with a
-[run] table (figure and sweep files are skipped: their points are these scenes with other values).
+[run] table (figure and sweep files are skipped: their points are these scenes with other values). A scene that
+one system over several ranks can run (`--spread particles`, the rank-wave backend) is run that way too, in one
+process.
 Exit status 0 when every file pair is identical, 1 otherwise, with one line per difference.
 
 Two files can also be compared directly: tests/same_bits.py --files A.h5 B.h5
@@ -80,6 +82,22 @@ def run(granmc, sweep, out_dir, threads, reuse):
     return h5
 
 
+def scene_text(h5):
+    """The text of the scene a result file ran (attribute scene_text; format 1 called it scene)."""
+    with h5py.File(h5, "r") as f:
+        text = f.attrs["scene_text"] if "format_version" in f.attrs else f.attrs["scene"]
+    return text.decode() if isinstance(text, bytes) else str(text)
+
+
+def run_spread(granmc, scene, out):
+    """The scene run as one system over the ranks (one process here), or None when granmc refuses that."""
+    explain = subprocess.run([granmc, "run", scene, "--spread", "particles", "--explain"], capture_output=True)
+    if explain.returncode != 0:
+        return None
+    subprocess.run([granmc, "run", scene, "--spread", "particles", "--out", out, "--quiet"], check=True)
+    return out
+
+
 def differences(a_path, b_path):
     """Lines naming every object or attribute that differs between two HDF5 files (empty: the same bits)."""
     out = []
@@ -139,9 +157,18 @@ def main():
         files = [run(exe, sweep, os.path.join(folder, tag), args.threads, reuse=tag == "reference")
                  for tag, exe in (("reference", args.reference), ("candidate", args.candidate))]
         diff = differences(*files)
+        shrunk = os.path.join(folder, "shrunk.toml")
+        with open(shrunk, "w") as f:
+            f.write(scene_text(files[0]))
+        spread = [run_spread(exe, shrunk, os.path.join(folder, f"spread-{tag}.h5"))
+                  for tag, exe in (("reference", args.reference), ("candidate", args.candidate))]
+        if spread[0] and spread[1]:
+            diff += ["--spread particles: " + line for line in differences(*spread)]
+        elif spread[0] or spread[1]:
+            diff.append("--spread particles: runs with one build only")
         failed += bool(diff)
-        print(f"[{k + 1}/{len(scenes)}] {os.path.relpath(scene, ROOT)}: {'same bits' if not diff else 'DIFFERENT'}",
-              flush=True)
+        print(f"[{k + 1}/{len(scenes)}] {os.path.relpath(scene, ROOT)}: {'same bits' if not diff else 'DIFFERENT'}"
+              f"{', also spread over ranks' if spread[0] else ''}", flush=True)
         for line in diff:
             print("    " + line)
     print(f"{len(scenes) - failed} of {len(scenes)} scenes give the same bits ({work})")

@@ -392,10 +392,10 @@ TEST_F(MpiRun, CoolingStateIsBitIdenticalOverRanksAndThreads) {
 TEST_F(MpiRun, ShearWithGaussianThermostatIsBitIdentical) {
   write("scene.toml", cooling_scene + "[thermostat]\nkind = \"gaussian\"\n[shear]\nrate = 0.5\n");
   expect_identical_runs(ways(false), {"/temperature/replicas", "/viscosity/pressure_kinetic",
-                                      "/viscosity/pressure_collisional", "/viscosity/eta_star_mean"});
+                                      "/viscosity/pressure_collisional", "/viscosity/eta_star_series/mean"});
 }
 
-/// One system over the ranks (--spread particles, schemes/spread_dsmc.hpp): 20000 particles are 5 chunks of
+/// One system over the ranks (--spread particles, schemes/rank_wave_backend.hpp): 20000 particles are 5 chunks of
 /// 4096, so 2 and 3 ranks split them unevenly and 6 ranks leave one rank without particles.
 std::string spread_scene() {
   return edited(cooling_scene, {{"replicas = 5", "replicas = 2"},
@@ -439,7 +439,8 @@ bath_density = 1.0
 [output]
 histogram = { shells = 20, radius = 5.0 }
 )");
-  expect_identical_runs(ways(true), {"/temperature/replicas", "/intruder/velocity", "/intruder/speed_counts"});
+  expect_identical_runs(ways(true),
+                        {"/temperature/replicas", "/intruder/velocity", "/intruder/speed_distribution/counts"});
 }
 
 /// `granmc sweep` under mpirun (docs/scaling.md, "Over MPI ranks"): the same index and, scene by scene, the

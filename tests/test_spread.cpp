@@ -1,4 +1,4 @@
-// One system over several ranks (schemes/spread_dsmc.hpp) in one process (SingleRank): the wave-ordered
+// One system over several ranks (schemes/rank_wave_backend.hpp) in one process (SingleRank): the wave-ordered
 // stage draws the same candidates from the same words as the one-process stage and, as long as the
 // majorant is not raised, makes the same collisions. Only the order of the sums over particles differs
 // (per chunk, then over chunks), so the observations agree to rounding: the same chain, hence the same
@@ -11,7 +11,8 @@
 
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/core/ranks.hpp"
-#include "kernel/schemes/spread_dsmc.hpp"
+#include "kernel/schemes/dsmc.hpp"
+#include "kernel/schemes/rank_wave_backend.hpp"
 #include "kernel/setup/run_scene.hpp"
 
 using namespace granmc;
@@ -99,12 +100,12 @@ TEST(SpreadSystem, AStepNeedsAHandfulOfWaves) {
   Scene s = cooling(ThermostatKind::none);
   s.species[0].particles = 100000;
   const SingleRank single;
-  SpreadDsmc<HardSphere> sim(s, 0, single);
+  BasicDsmc<RankWaveBackend, double, HardSphere> sim(s, 0, single);
   const double t = 0.5;
   sim.advance_to(t);
   const double steps = t / s.run.dt;
   const double per_step = static_cast<double>(sim.tally().candidates) / steps;
-  const double waves = static_cast<double>(sim.waves()) / steps;
+  const double waves = static_cast<double>(sim.backend().waves()) / steps;
   std::printf("[ measured ] %.0f candidates per step (2C/N = %.3f), %.1f waves per step\n", per_step,
               2.0 * per_step / 100000.0, waves);
   EXPECT_GT(waves, 1.0);

@@ -51,4 +51,6 @@ struct EnskogShearShift {
   }
 };
 
+static_assert(CollisionShift<EnskogShearShift>);
+
 }  // namespace granmc

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <span>
 
+#include "kernel/collide/collision_kernel.hpp"
 #include "kernel/core/batch_variates.hpp"
 
 namespace granmc {
@@ -47,5 +48,7 @@ struct VhsKernel {
     }
   }
 };
+
+static_assert(EventKernel<MaxwellKernel> && EventKernel<IsotropicHardSphereKernel> && EventKernel<VhsKernel>);
 
 }  // namespace granmc

@@ -8,6 +8,8 @@
 // docs/physics.md derives both.
 #include <cmath>
 
+#include "kernel/collide/collision_kernel.hpp"
+
 namespace granmc {
 
 struct MaxwellPseudomolecules {
@@ -25,5 +27,7 @@ struct MaxwellPseudomolecules {
   static constexpr double mean_rate(double /*g2*/) noexcept { return 0.25; }
   static constexpr double mean_bound(double /*relative_speed*/) noexcept { return 0.25; }
 };
+
+static_assert(SteppedKernel<MaxwellPseudomolecules>);
 
 }  // namespace granmc

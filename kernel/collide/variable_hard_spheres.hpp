@@ -7,6 +7,7 @@
 // is a value, not only a type.
 #include <cmath>
 
+#include "kernel/collide/collision_kernel.hpp"
 #include "kernel/core/scene.hpp"
 
 namespace granmc {
@@ -32,5 +33,7 @@ struct VariableHardSpheres {
     return 0.25 * std::pow(relative_speed, lambda);
   }
 };
+
+static_assert(SteppedKernel<VariableHardSpheres>);
 
 }  // namespace granmc

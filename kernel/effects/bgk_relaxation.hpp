@@ -27,6 +27,7 @@ namespace granmc {
 struct BgkRelaxation {
   static constexpr StepPhase phase = StepPhase::after_collisions;
   static constexpr const char* name = "bgk-relaxation";
+  static constexpr bool acts_on_particles = true;
 
   SonineMaxwellian f0{0.0};  // f^(0) in reduced velocity V / v0, a2 of the scene's alpha
   double mass = 1.0;
@@ -65,5 +66,7 @@ struct BgkRelaxation {
     return change;
   }
 };
+
+static_assert(FreeFlightEffect<BgkRelaxation>);
 
 }  // namespace granmc

@@ -17,6 +17,7 @@ namespace granmc {
 struct GaussianThermostat {
   static constexpr StepPhase phase = StepPhase::after_collisions;
   static constexpr const char* name = "gaussian-thermostat";
+  static constexpr bool acts_on_particles = false;  // the velocity scale only
 
   bool compensate_cooling = true;  // zeta = instantaneous cooling rate
   double zeta = 0.0;               // fixed rate (1 / time) when not compensating
@@ -37,5 +38,7 @@ struct GaussianThermostat {
     return 0.0;
   }
 };
+
+static_assert(FreeFlightEffect<GaussianThermostat>);
 
 }  // namespace granmc

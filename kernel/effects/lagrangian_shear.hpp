@@ -20,6 +20,7 @@ struct LagrangianShear {
   // The step fuses each second half with the next first half: one pass per step.
   static constexpr StepPhase phase = StepPhase::around_collisions;
   static constexpr const char* name = "lagrangian-shear";
+  static constexpr bool acts_on_particles = true;
 
   double rate = 0.0;           // a (1 / time)
   std::vector<double> masses;  // m_i of the species, in scene order
@@ -48,5 +49,7 @@ struct LagrangianShear {
     return change.value();
   }
 };
+
+static_assert(FreeFlightEffect<LagrangianShear>);
 
 }  // namespace granmc

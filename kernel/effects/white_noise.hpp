@@ -21,6 +21,7 @@ namespace granmc {
 struct WhiteNoise {
   static constexpr StepPhase phase = StepPhase::after_collisions;
   static constexpr const char* name = "white-noise";
+  static constexpr bool acts_on_particles = true;
 
   double beta = 0.0;           // velocity diffusion coefficient (velocity^2 / time)
   std::vector<double> masses;  // m_i of the species, in scene order
@@ -36,16 +37,16 @@ struct WhiteNoise {
   double apply(State& state, const StepContext& step) const noexcept {
     CompensatedSum change;
     for (std::size_t i = 0; i < state.species.size(); ++i)
-      kick(state.species[i], 0, state.species[i].size(), 0, static_cast<std::uint16_t>(i), state, step, change);
+      apply_range(state.species[i], 0, state.species[i].size(), 0, static_cast<std::uint16_t>(i), state, step, change);
     return change.value();
   }
 
   /// Kicks particles [from, to) of the store of species i, whose particle k is particle `offset` + k of the
-  /// species (a part of a system spread over ranks, schemes/spread_dsmc.hpp; `from` and `offset` multiples
-  /// of `batch`), and adds the change of m sum |c|^2 to `change`.
+  /// species (a part of a system spread over ranks, schemes/rank_wave_backend.hpp; `from` and `offset`
+  /// multiples of `batch`), and adds the change of m sum |c|^2 to `change`.
   template <class Store, class State>
-  void kick(Store& store, std::size_t from, std::size_t to, std::uint64_t offset, std::uint16_t i, const State& state,
-            const StepContext& step, CompensatedSum& change) const noexcept {
+  void apply_range(Store& store, std::size_t from, std::size_t to, std::uint64_t offset, std::uint16_t i,
+                   const State& state, const StepContext& step, CompensatedSum& change) const noexcept {
     const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
     const double mass = masses[i];
     for_each_particle_normal<batch>(*step.rng, RngPurpose::white_noise_kick, i, state.step, offset + from, to - from,
@@ -57,5 +58,7 @@ struct WhiteNoise {
                                     });
   }
 };
+
+static_assert(FreeFlightEffect<WhiteNoise>);
 
 }  // namespace granmc

@@ -30,7 +30,7 @@ struct Observed {
 
 /// Appends the temperatures, cumulants and momentum of one observation to `series`, from the moments of
 /// every species about the origin and about the flow velocity (the part of observe_gas that needs no
-/// particle; a system spread over ranks sums its moments first, schemes/spread_dsmc.hpp).
+/// particle; a system spread over ranks sums its moments first, schemes/rank_wave_backend.hpp).
 Observed record_observation(const Scene& scene, const VelocityScale& scale,
                             const std::vector<SpeciesMoments>& about_origin,
                             const std::vector<SpeciesMoments>& about_flow, ReplicaSeries& series);

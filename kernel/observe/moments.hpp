@@ -31,7 +31,7 @@ struct SpeciesMoments {
 };
 
 /// The moments of the particles [first, last) of the store (a part of a system spread over ranks sums
-/// these per chunk, schemes/spread_dsmc.hpp). (Instantiated for SpeciesStore and FloatSpeciesStore.)
+/// these per chunk, schemes/rank_wave_backend.hpp). (Instantiated for SpeciesStore and FloatSpeciesStore.)
 template <class Real>
 SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre, std::size_t first,
                                std::size_t last) noexcept;

@@ -1,5 +1,5 @@
 #pragma once
-// Time-stepped ESMC/DSMC for a spatially homogeneous gas (000 sec. 3), one replica.
+// Time-stepped ESMC/DSMC for a spatially homogeneous gas (000 sec. 3), one replica: the one time stepper.
 //
 // A step of length dt runs the free-flight effects the scene named, then the collision stage for every
 // ordered species pair (i, j) with 1/2 N_i omega_max^(ij) dt candidates (the fractional part carried to
@@ -7,8 +7,10 @@
 // before and half after the collision stage, the second half fused with the next step's first in one pass
 // (settled before every observation). `Kernel` is the collision-rate evaluator
 // (collide/), `Effects` the evaluator structs of effects/ (effects/step_context.hpp says what they
-// look like); an effect the scene does not name is not in the pack and costs nothing. One file,
-// setup/run_plan.cpp, chooses the instantiation.
+// look like); an effect the scene does not name is not in the pack and costs nothing. `Backend` holds the
+// particles, the collision stage and the sums over particles: the batched stage of one process
+// (schemes/batched_backend.hpp) or the rank waves of one system spread over MPI ranks
+// (schemes/rank_wave_backend.hpp). One file, setup/run_plan.cpp, chooses the instantiation.
 //
 // Long cooling runs never underflow: the stored velocities are rescaled to unit temperature (and the
 // centre-of-mass velocity removed) whenever the stored energy has drifted by a factor
@@ -16,23 +18,27 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
+#include "kernel/collide/collision_kernel.hpp"
 #include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
+#include "kernel/core/ranks.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/core/sym_tensor.hpp"
 #include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/effects/step_context.hpp"
 #include "kernel/observe/gas_observation.hpp"
+#include "kernel/schemes/batched_backend.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/gas_state.hpp"
-#include "kernel/schemes/initial_state.hpp"
 
 namespace granmc {
 
@@ -50,7 +56,7 @@ struct collision_shift<First, Rest...> {
 }  // namespace detail
 
 /// Real is the storage precision of the velocities (run.storage; core/species_store.hpp).
-template <class Real, class Kernel, class... Effects>
+template <class Backend, class Real, SteppedKernel Kernel, StepEffect... Effects>
 class BasicDsmc {
   using Shift = typename detail::collision_shift<Effects...>::type;
 
@@ -61,13 +67,22 @@ class BasicDsmc {
   /// Stored energy may drift by this factor before the velocities are rescaled.
   static constexpr double rescale_factor = 1.25;
 
+  /// A replica held in one process (BatchedBackend).
   BasicDsmc(const Scene& scene, std::uint64_t replica, Effects... effects)
+      : BasicDsmc(scene, replica, Backend(scene), effects...) {}
+
+  /// A replica spread over `ranks` (RankWaveBackend).
+  BasicDsmc(const Scene& scene, std::uint64_t replica, const Ranks& ranks, Effects... effects)
+      : BasicDsmc(scene, replica, Backend(scene, ranks), effects...) {}
+
+  BasicDsmc(const Scene& scene, std::uint64_t replica, Backend backend, Effects... effects)
       : scene_(scene),
         rng_(scene.run.seed, replica),
         kernel_(Kernel::from_scene(scene)),
         pairs_(pair_coefficients(scene)),
         effects_(effects...),
-        state_(maxwellian_state<Real>(scene, rng_)) {
+        backend_(std::move(backend)),
+        state_(backend_.template initial_state<Real>(scene, rng_)) {
     for (const SpeciesConfig& s : scene.species) total_particles_ += static_cast<double>(s.particles);
     rescale();  // unit stored temperature from the start; not counted as a rescaling during the run
     rescales_ = 0;
@@ -77,11 +92,7 @@ class BasicDsmc {
     // on omega_kl at t = 0, or a quarter of it, a bound on its mean over sigma-hat, in the form of the
     // acceptance the collision stage uses (majorant_bound); afterwards it grows when exceeded (000 sec. 3).
     std::vector<double> max_speed;
-    for (const BasicSpeciesStore<Real>& s : state_.species) {
-      double m = 0.0;
-      s.for_each_velocity([&](const Vec3& c) { m = std::max(m, norm2(c)); });
-      max_speed.push_back(std::sqrt(m));
-    }
+    for (const BasicSpeciesStore<Real>& s : state_.species) max_speed.push_back(std::sqrt(backend_.largest_speed2(s)));
     for (const PairCoefficients& p : pairs_) {
       omega_max_.push_back(majorant_bound<Shift>(kernel_, p, max_speed[p.i] + max_speed[p.j]));
       carried_.push_back(0.0);
@@ -92,6 +103,7 @@ class BasicDsmc {
   }
 
   [[nodiscard]] const BasicGasState<Real>& state() const noexcept { return state_; }
+  [[nodiscard]] const Backend& backend() const noexcept { return backend_; }
   [[nodiscard]] const CollisionTally& tally() const noexcept { return total_; }
   /// Totals per ordered species pair, in the order of pair_coefficients(scene).
   [[nodiscard]] const std::vector<CollisionTally>& pair_tallies() const noexcept { return pair_totals_; }
@@ -124,6 +136,12 @@ class BasicDsmc {
     owed_ = 0.0;
   }
 
+  /// Appends the observation of the present state to `series` (with `histogram`, its speeds to the speed
+  /// histograms); returns the totals the backend summed.
+  GasTotals observe(ReplicaSeries& series, bool histogram) const {
+    return backend_.observe(scene_, state_, series, histogram);
+  }
+
  private:
   double log_temperature() const noexcept {
     return state_.scale.log_temperature(twice_energy_ / (3.0 * total_particles_));
@@ -144,7 +162,7 @@ class BasicDsmc {
     const double u_dt = std::exp(kernel_.lambda * state_.scale.log_u + std::log(dt));  // u^lambda dt
     for (std::size_t q = 0; q < pairs_.size(); ++q) {
       const PairCoefficients& p = pairs_[q];
-      const double n_i = static_cast<double>(state_.species[p.i].size());
+      const double n_i = static_cast<double>(scene_.species[p.i].particles);
       if (p.i == p.j && n_i < 2.0) continue;  // no partner within a species of one particle
       // 1/2 N_i omega_max dt candidates (000 sec. 3), with N_i - 1 for a pair within one species: the
       // partner is drawn among the N_i - 1 others, so each of the N_i (N_i - 1) ordered pairs gets its
@@ -159,7 +177,9 @@ class BasicDsmc {
       candidates_[q] = static_cast<std::uint64_t>(whole);
     }
     std::fill(step_tallies_.begin(), step_tallies_.end(), CollisionTally{});
-    collide_step<Kernel>(state_, pairs_, omega_max_, candidates_, rng_, step_tallies_, kernel_, step_shift());
+    backend_.collide(state_, std::span<const PairCoefficients>(pairs_), std::span<double>(omega_max_),
+                     std::span<const std::uint64_t>(candidates_), rng_, std::span<CollisionTally>(step_tallies_),
+                     kernel_, step_shift());
     CollisionTally tally;
     for (std::size_t q = 0; q < pairs_.size(); ++q) {
       add(pair_totals_[q], step_tallies_[q]);
@@ -209,12 +229,12 @@ class BasicDsmc {
     auto run_one = [&](auto& effect) {
       constexpr StepPhase its = std::decay_t<decltype(effect)>::phase;
       if constexpr (its == phase) {
-        twice_energy_ += effect.apply(state_, ctx);
+        twice_energy_ += backend_.apply(effect, state_, ctx);
         ctx.twice_energy = twice_energy_;
       } else if constexpr (its == StepPhase::around_collisions && phase == StepPhase::free_flight) {
         StepContext owed_and_half = ctx;
         owed_and_half.dt = owed_ + 0.5 * ctx.dt;
-        twice_energy_ += effect.apply(state_, owed_and_half);
+        twice_energy_ += backend_.apply(effect, state_, owed_and_half);
         ctx.twice_energy = twice_energy_;
       }
     };
@@ -227,7 +247,7 @@ class BasicDsmc {
     if (dt == 0.0) return;
     auto run_one = [&](auto& effect) {
       if constexpr (std::decay_t<decltype(effect)>::phase == StepPhase::around_collisions)
-        twice_energy_ += effect.apply(state_, {dt, twice_energy_, 0.0, &rng_});
+        twice_energy_ += backend_.apply(effect, state_, {dt, twice_energy_, 0.0, &rng_});
     };
     std::apply([&](auto&... effect) { (run_one(effect), ...); }, effects_);
   }
@@ -236,7 +256,7 @@ class BasicDsmc {
   /// moving the scale into log u. omega_max stays in stored units: the majorant estimate follows the
   /// thermal speed, as the shape of the scaled distribution does.
   void rescale() noexcept {
-    const GasTotals t = gas_totals(scene_, gas_moments(state_));
+    const GasTotals t = gas_totals(scene_, backend_.moments(state_));
     const Vec3 v_cm = (1.0 / t.mass) * t.momentum;
     momentum_removed_ += norm(t.momentum) / std::sqrt(t.mass * t.twice_energy);
     const double twice_energy = t.twice_energy - norm2(t.momentum) / t.mass;  // after removing v_cm
@@ -252,6 +272,7 @@ class BasicDsmc {
   Kernel kernel_;
   std::vector<PairCoefficients> pairs_;
   std::tuple<Effects...> effects_;
+  Backend backend_;
   BasicGasState<Real> state_;
   std::vector<double> omega_max_;          // per ordered pair, units of u
   std::vector<double> carried_;            // fractional candidates carried to the next step
@@ -270,8 +291,8 @@ class BasicDsmc {
   double owed_ = 0.0;  // the half step the around_collisions effects owe since the last step (scene time)
 };
 
-/// Double storage, the default.
+/// One process, double storage, the default.
 template <class Kernel, class... Effects>
-using Dsmc = BasicDsmc<double, Kernel, Effects...>;
+using Dsmc = BasicDsmc<BatchedBackend, double, Kernel, Effects...>;
 
 }  // namespace granmc

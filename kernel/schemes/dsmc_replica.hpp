@@ -1,51 +1,47 @@
 #pragma once
-// One replica of the time-stepped scheme from t = 0 to t_end, observed at the sample times.
+// One replica of the time-stepped scheme from t = 0 to t_end, observed at the sample times, whatever its
+// backend (schemes/dsmc.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "kernel/observe/gas_observation.hpp"
 #include "kernel/observe/pressure_tensor.hpp"
 #include "kernel/schemes/dsmc.hpp"
-#include "kernel/schemes/run_options.hpp"
 
 namespace granmc {
 
-/// The whole-run counters of a time-stepped replica (Dsmc or SpreadDsmc) into its series.
+/// Runs `sim` (a BasicDsmc just made) to each sample time in turn and records the replica's series;
+/// `on_sample` is called after each observation.
 template <class Sim>
-void record_run_counters(const Sim& sim, ReplicaSeries& series) {
-  series.candidates = sim.tally().candidates;
-  series.majorant_updates = sim.tally().majorant_updates;
-  series.rescales = sim.rescales();
-  series.momentum_removed_relative = sim.momentum_removed_relative();
-}
-
-template <class Real, class Kernel, class... Effects>
-ReplicaSeries run_dsmc_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
-                               const RunOptions& options, Effects... effects) {
-  BasicDsmc<Real, Kernel, Effects...> sim(scene, replica, effects...);
+ReplicaSeries run_dsmc_replica(Sim& sim, const Scene& scene, const std::vector<double>& times,
+                               const std::function<void()>& on_sample) {
   const std::vector<double> initial_majorant = sim.omega_max();
   ReplicaSeries series;
   series.species.resize(scene.species.size());
   for (std::size_t k = 0; k < times.size(); ++k) {
     sim.advance_to(times[k]);
-    const GasTotals summed = observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
+    const GasTotals summed = sim.observe(series, k >= first_stationary_sample(times.size()));
     series.energy_residual = std::max(series.energy_residual.value_or(0.0),
                                       std::abs(sim.tracked_twice_energy() / summed.twice_energy - 1.0));
-    if constexpr (BasicDsmc<Real, Kernel, Effects...>::sheared) {
+    if constexpr (Sim::sheared) {
       series.pressure_kinetic.push_back(reduced_kinetic_pressure(scene, sim.state()));
       series.pressure_collisional.push_back(sim.take_collisional_pressure());
       series.reduced_shear_rate.push_back(scene.shear_rate /
                                           effective_collision_frequency(scene, series.temperature.back()));
     }
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
-    if (options.on_sample) options.on_sample();
+    if (on_sample) on_sample();
   }
   for (const CollisionTally& pair : sim.pair_tallies()) series.pair_collisions.push_back(pair.collisions);
   for (std::size_t q = 0; q < initial_majorant.size(); ++q)
     series.majorant_growth.push_back(sim.omega_max()[q] / initial_majorant[q]);
-  record_run_counters(sim, series);
+  series.candidates = sim.tally().candidates;
+  series.majorant_updates = sim.tally().majorant_updates;
+  series.rescales = sim.rescales();
+  series.momentum_removed_relative = sim.momentum_removed_relative();
   return series;
 }
 

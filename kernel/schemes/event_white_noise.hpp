@@ -31,6 +31,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "kernel/collide/collision_kernel.hpp"
 #include "kernel/collide/isotropic_scattering.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
@@ -68,7 +69,7 @@ inline Thinning thinning(double g2, double threshold, double majorant, double ma
 /// Real is the storage precision of the particles (run.storage; core/species_store.hpp). With
 /// in_registers = false every candidate goes through `candidate`, one after the other: the reference the
 /// tests hold candidates_in_simd to, bit for bit.
-template <class Real, class Kernel, bool in_registers = true>
+template <class Real, EventKernel Kernel, bool in_registers = true>
 class BasicEventWhiteNoise {
   using Store = BasicSpeciesStore<Real>;
   using State = BasicGasState<Real>;

@@ -13,7 +13,7 @@ struct RunOptions {
   // The defaults run all replicas.
   int replica_offset = 0;
   int replica_stride = 1;
-  // Not null: every replica is one system spread over these ranks (schemes/spread_dsmc.hpp), the replicas
+  // Not null: every replica is one system spread over these ranks (schemes/rank_wave_backend.hpp), the replicas
   // one after another; replica_offset and replica_stride are not read, and every rank returns every replica.
   const Ranks* spread = nullptr;
 };

@@ -65,7 +65,7 @@ using ThermostatChoice = std::variant<EffectList<>, EffectList<GaussianThermosta
                                       EffectList<GaussianThermostat, BgkRelaxation>, EffectList<WhiteNoise>>;
 
 /// The collision backends of the time stepper: the batched stage of one process, or the rank waves of one
-/// system spread over MPI ranks (`--spread particles`, schemes/spread_dsmc.hpp).
+/// system spread over MPI ranks (`--spread particles`, schemes/rank_wave_backend.hpp).
 struct BatchedStage {};
 struct RankWaveStage {};
 using BackendChoice = std::variant<BatchedStage, RankWaveStage>;

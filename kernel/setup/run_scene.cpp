@@ -9,45 +9,50 @@
 #include "kernel/schemes/intruder_1d.hpp"
 #include "kernel/schemes/intruder_dsmc_1d.hpp"
 #include "kernel/schemes/intruder_needle.hpp"
+#include "kernel/schemes/rank_wave_backend.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 #include "kernel/schemes/sample_times.hpp"
-#include "kernel/schemes/spread_dsmc.hpp"
 
 namespace granmc {
 
 namespace {
 
-/// Every replica spread over options.spread, one after another (schemes/spread_dsmc.hpp).
-template <class Kernel>
-RunResult run_spread(const Scene& scene, const RunOptions& options) {
-  RunResult result;
-  result.times = sample_times(scene.run);
-  result.species_names.push_back(scene.species[0].name);
-  result.threads = 1;
-  for (int r = 0; r < scene.run.replicas; ++r)
-    result.replicas.push_back(run_spread_replica<Kernel>(scene, static_cast<std::uint64_t>(r), result.times,
-                                                         *options.spread, options.on_sample));
-  return result;
+/// The time-stepped scheme with the plan's kernel and effects: the replicas over the threads with the batched
+/// backend, or, with the rank waves, every replica spread over options.spread, one after another.
+template <class Backend, class Real, class Kernel, class... Effects>
+RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Effects&... effects) {
+  if constexpr (std::is_same_v<Backend, RankWaveBackend>) {
+    RunResult result;
+    result.times = sample_times(scene.run);
+    result.species_names.push_back(scene.species[0].name);
+    result.threads = 1;
+    for (int r = 0; r < scene.run.replicas; ++r) {
+      BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, static_cast<std::uint64_t>(r), *options.spread,
+                                                       effects...);
+      result.replicas.push_back(run_dsmc_replica(sim, scene, result.times, options.on_sample));
+    }
+    return result;
+  } else {
+    return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+      BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, replica, effects...);
+      return run_dsmc_replica(sim, scene, times, options.on_sample);
+    });
+  }
 }
 
 RunResult run(const SteppedPlan& plan, const Scene& scene, const RunOptions& options) {
   return std::visit(
-      [&](const auto& kernel, const auto& shear, const auto& thermostat, auto storage, auto backend) -> RunResult {
+      [&](const auto& kernel, const auto& shear, const auto& thermostat, auto storage, auto stage) -> RunResult {
         using Kernel = std::decay_t<decltype(kernel)>;
-        using Backend = decltype(backend);
+        using Stage = decltype(stage);
         if constexpr (!stepped_supported<Kernel, std::decay_t<decltype(shear)>, std::decay_t<decltype(thermostat)>,
-                                         decltype(storage), Backend>) {
+                                         decltype(storage), Stage>) {
           throw std::logic_error("granmc: a plan that make_plan refuses reached the dispatch");
-        } else if constexpr (std::is_same_v<Backend, RankWaveStage>) {
-          return run_spread<Kernel>(scene, options);
         } else {
+          using Backend = std::conditional_t<std::is_same_v<Stage, RankWaveStage>, RankWaveBackend, BatchedBackend>;
           using Real = typename decltype(storage)::type;
           return std::apply(
-              [&](const auto&... effects) {
-                return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-                  return run_dsmc_replica<Real, Kernel>(scene, replica, times, options, effects...);
-                });
-              },
+              [&](const auto&... effects) { return run_dsmc<Backend, Real, Kernel>(scene, options, effects...); },
               std::tuple_cat(shear.effects, thermostat.effects));
         }
       },

@@ -1,8 +1,8 @@
 #pragma once
-// One replica of the time-stepped scheme (000 sec. 3) spread over several ranks: for a system larger than
-// one machine's memory (docs/scaling.md, "One system over several ranks"). One species, no free-flight
-// effect; the Gaussian thermostat (it only moves the velocity scale) or white noise (per particle, the same
-// normals) may act after the collisions.
+// The collision backend of one system spread over several ranks (`--spread particles`; docs/scaling.md,
+// "One system over several ranks"): for a system larger than one machine's memory. The time stepper
+// (schemes/dsmc.hpp) is the same as in one process; this backend holds the particles, the collision stage
+// and the sums over particles. One species; the effects that act on particles act on this rank's part.
 //
 // Rank r holds the particles of chunks [C r / R, C (r + 1) / R) of `chunk` consecutive global indices.
 // Every rank draws the whole step's candidate list from the counter-based stream, the same words as the
@@ -13,14 +13,14 @@
 // the owner of k does the candidate; a partner l held elsewhere comes in one exchange and goes back in a
 // second.
 //
-// What differs from schemes/dsmc.hpp, and why the law is the same:
+// What differs from the batched backend (schemes/batched_backend.hpp), and why the law is the same:
 //  - The majorant is the step's: a candidate above it collides (the paper's rule, 000 sec. 3) and the
 //    raise takes effect at the next step instead of the next candidate. Without a raise (the rule
 //    thereafter; `make stability`) the chain is the one-process chain; at a raise both are the paper's
 //    approximation, counted in majorant_updates.
 //  - Sums over particles are compensated per chunk and then over the chunks in order; the energy loss of
 //    a step is summed over the candidates in list order. Both are the same bits for any number of ranks
-//    (tests/test_mpi.cpp), but not the bits of schemes/dsmc.hpp, which sums over all particles at once.
+//    (tests/test_mpi.cpp), but not the bits of the batched backend, which sums over all particles at once.
 //    The velocities then differ in their last bits only, so both stages make the same collisions unless
 //    a rounding flips an acceptance (tests/test_spread.cpp: the same collisions over a 25-fold cooling).
 #include <algorithm>
@@ -28,9 +28,8 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <functional>
+#include <span>
 #include <stdexcept>
-#include <string>
 #include <vector>
 
 #include "kernel/collide/impact_direction.hpp"
@@ -41,16 +40,13 @@
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/core/species_store.hpp"
-#include "kernel/effects/gaussian_thermostat.hpp"
-#include "kernel/effects/white_noise.hpp"
+#include "kernel/effects/step_context.hpp"
 #include "kernel/observe/compensated_sum.hpp"
 #include "kernel/observe/gas_observation.hpp"
 #include "kernel/observe/speed_histogram.hpp"
 #include "kernel/schemes/collision_stage.hpp"
-#include "kernel/schemes/dsmc_replica.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
-#include "kernel/schemes/sample_times.hpp"
 
 namespace granmc {
 
@@ -60,23 +56,16 @@ namespace granmc {
 inline constexpr std::size_t spread_segment = std::size_t{1} << 18;
 inline constexpr std::size_t spread_candidate_bytes = 120;
 
-template <class Kernel>
-class SpreadDsmc {
+class RankWaveBackend {
  public:
-  /// Particles per partial sum; a multiple of every batch of the stream (16).
+  /// Particles per partial sum; a multiple of every batch of the stream (64).
   static constexpr std::size_t chunk = 4096;
-  static_assert(chunk % WhiteNoise::batch == 0);
-  static constexpr double rescale_factor = 1.25;  // as schemes/dsmc.hpp
   static constexpr std::size_t segment = spread_segment;
 
-  SpreadDsmc(const Scene& scene, std::uint64_t replica, const Ranks& ranks)
-      : scene_(scene),
-        ranks_(ranks),
+  RankWaveBackend(const Scene& scene, const Ranks& ranks)
+      : ranks_(ranks),
         me_(ranks.rank()),
         size_(ranks.size()),
-        rng_(scene.run.seed, replica),
-        kernel_(Kernel::from_scene(scene)),
-        pair_(pair_coefficients(scene).at(0)),
         n_(static_cast<std::size_t>(scene.species.at(0).particles)),
         mass_(scene.species[0].mass) {
     if (scene.species.size() != 1) throw std::invalid_argument("a system spread over ranks has one species");
@@ -86,57 +75,102 @@ class SpreadDsmc {
     first_chunk_ = chunks_ * r / size;
     lo_ = std::min(n_, first_chunk_ * chunk);
     hi_ = std::min(n_, chunks_ * (r + 1) / size * chunk);
-    state_.species.emplace_back(hi_ - lo_);
-    state_.scale.log_u = 0.5 * std::log(scene.initial_temperature);
-    // The Maxwellian start of schemes/initial_state.cpp, particle k from the same block (000 eq. 13).
-    const double width = 1.0 / std::sqrt(mass_);
-    maxwellian_velocities(store(), rng_, 0, lo_, width);
-    const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments({}).sum_c;
-    store().for_each_velocity([&](Vec3& c) { c -= mean; });
-    rescale();
-    rescales_ = 0;
-    momentum_removed_ = 0.0;
-    log_temperature0_ = log_temperature();
-    double max2 = 0.0;
-    store().for_each_velocity([&](const Vec3& c) { max2 = std::max(max2, norm2(c)); });
-    const double max_speed = std::sqrt(ranks_.max(max2));
-    omega_max_ = majorant_bound<NoCollisionShift>(kernel_, pair_, 2.0 * max_speed);
-    initial_omega_max_ = omega_max_;
   }
 
-  [[nodiscard]] const CollisionTally& tally() const noexcept { return total_; }
-  [[nodiscard]] double omega_max() const noexcept { return omega_max_; }
-  [[nodiscard]] double initial_omega_max() const noexcept { return initial_omega_max_; }
-  [[nodiscard]] std::uint64_t rescales() const noexcept { return rescales_; }
-  [[nodiscard]] double momentum_removed_relative() const noexcept { return momentum_removed_; }
-  [[nodiscard]] double tracked_twice_energy() const noexcept { return twice_energy_; }
   /// Waves of the steps so far (the sequential depth of the collision stage over ranks).
   [[nodiscard]] std::uint64_t waves() const noexcept { return waves_; }
 
-  /// Steps until the time reaches t (the last step shortened to land on t), as Dsmc::advance_to.
-  void advance_to(double t) {
-    while (state_.time < t) {
-      const double dt = std::min(step_length(), t - state_.time);
-      step(dt);
-      state_.time = state_.time + dt >= t ? t : state_.time + dt;
+  /// This rank's part of the Maxwellian start of schemes/initial_state.cpp, particle k from the same block
+  /// (000 eq. 13), with the mean of all particles removed.
+  template <class Real>
+  BasicGasState<Real> initial_state(const Scene& scene, const RandomStream& rng) const {
+    BasicGasState<Real> state;
+    state.species.emplace_back(hi_ - lo_);
+    state.scale.log_u = 0.5 * std::log(scene.initial_temperature);
+    maxwellian_velocities(state.species[0], rng, 0, lo_, 1.0 / std::sqrt(mass_));
+    const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments_about(state.species[0], {}).sum_c;
+    state.species[0].for_each_velocity([&](Vec3& c) { c -= mean; });
+    return state;
+  }
+
+  /// The moments of all particles about the origin, summed over the ranks.
+  template <class Real>
+  std::vector<SpeciesMoments> moments(const BasicGasState<Real>& state) const {
+    return {moments_about(state.species[0], {})};
+  }
+
+  /// The largest |c|^2 over all ranks.
+  template <class Store>
+  double largest_speed2(const Store& store) const {
+    double max2 = 0.0;
+    store.for_each_velocity([&](const Vec3& c) { max2 = std::max(max2, norm2(c)); });
+    return ranks_.max(max2);
+  }
+
+  /// The step's candidates of the one pair, segment after segment, against the majorant omega_max[0] of the
+  /// step; the raise to the largest omega above it takes effect at the next step.
+  template <class Kernel, class Shift, class Real>
+  void collide(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
+               std::span<const std::uint64_t> candidates, const RandomStream& rng, std::span<CollisionTally> tallies,
+               const Kernel& kernel, const Shift&) {
+    static_assert(!Shift::active, "no shear over ranks (setup/run_plan.hpp, spread_refusal)");
+    const std::size_t count = candidates[0];
+    double counts[2] = {0.0, 0.0};  // collisions, candidates above the majorant (this rank's)
+    double above = 0.0;             // the largest omega above the majorant
+    std::uint32_t waves = 0;
+    CollisionTally& tally = tallies[0];
+    for (std::size_t first = 0; first < count; first += segment)
+      waves += collide_segment(state.species[0], state.step, rng, kernel, pairs[0], omega_max[0], first,
+                               std::min(segment, count - first), tally.twice_energy_loss, counts, above);
+    ranks_.sum(counts);
+    tally.candidates = count;
+    tally.collisions = static_cast<std::uint64_t>(counts[0]);
+    tally.majorant_updates = static_cast<std::uint64_t>(counts[1]);
+    omega_max[0] = std::max(omega_max[0], ranks_.max(above));
+    waves_ += waves;
+  }
+
+  /// An effect over the step: one that acts on particles acts on this rank's part chunk by chunk
+  /// (apply_range, the same random words per global particle index), its energy change summed per chunk,
+  /// then over the chunks in order; the others (the Gaussian thermostat moves the velocity scale) as they are.
+  template <class Effect, class Real>
+  double apply(const Effect& effect, BasicGasState<Real>& state, const StepContext& step) const {
+    if constexpr (!Effect::acts_on_particles) {
+      return effect.apply(state, step);
+    } else {
+      static_assert(chunk % Effect::batch == 0, "a chunk is whole batches of the effect's random words");
+      std::vector<double> parts(chunks_, 0.0);
+      for (std::size_t c = first_chunk_; c * chunk < hi_; ++c) {
+        CompensatedSum change;
+        effect.apply_range(state.species[0], c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_, lo_, 0, state, step,
+                           change);
+        parts[c] = change.value();
+      }
+      ranks_.sum(parts);
+      CompensatedSum total;
+      for (const double x : parts) total.add(x);
+      return total.value();
     }
   }
 
-  /// Appends one observation (every rank gets the same series); returns the summed sum m |c|^2.
-  double observe(ReplicaSeries& series, bool histogram) {
-    const SpeciesMoments origin = moments({});
+  /// Appends one observation (every rank gets the same series); returns the totals it summed.
+  template <class Real>
+  GasTotals observe(const Scene& scene, const BasicGasState<Real>& state, ReplicaSeries& series, bool histogram) const {
+    const SpeciesMoments origin = moments_about(state.species[0], {});
     const Vec3 flow = (1.0 / static_cast<double>(n_)) * origin.sum_c;
-    const Observed o = record_observation(scene_, state_.scale, {origin}, {moments(flow)}, series);
+    const Observed o =
+        record_observation(scene, state.scale, {origin}, {moments_about(state.species[0], flow)}, series);
     if (histogram) {
-      std::vector<double> counts(static_cast<std::size_t>(scene_.histogram.shells), 0.0);
-      add_speeds(store(), histogram_speed_unit(scene_, state_.scale, o.theta_mixture), scene_.histogram.radius, counts);
+      std::vector<double> counts(static_cast<std::size_t>(scene.histogram.shells), 0.0);
+      add_speeds(state.species[0], histogram_speed_unit(scene, state.scale, o.theta_mixture), scene.histogram.radius,
+                 counts);
       ranks_.sum(counts);  // whole numbers: exact in any order
       std::vector<double>& total = series.species[0].speed_counts;
       total.resize(counts.size(), 0.0);
       for (std::size_t s = 0; s < counts.size(); ++s) total[s] += counts[s];
       ++series.histogram_samples;
     }
-    return o.totals.twice_energy;
+    return o.totals;
   }
 
  private:
@@ -147,7 +181,6 @@ class SpreadDsmc {
     std::size_t j;
   };
 
-  SpeciesStore& store() noexcept { return state_.species[0]; }
   [[nodiscard]] int owner(std::uint64_t k) const noexcept {
     // the rank whose chunks hold k: the largest r with floor(chunks r / R) <= k / chunk
     const std::uint64_t c = k / chunk, size = static_cast<std::uint64_t>(size_);
@@ -157,28 +190,13 @@ class SpreadDsmc {
     return static_cast<int>(r);
   }
 
-  /// The white-noise kick of the step on this rank's particles (effects/white_noise.hpp, the same normals
-  /// per global particle index); its energy change summed per chunk, then over the chunks in order.
-  double white_noise(const StepContext& step) {
-    const WhiteNoise noise{scene_.thermostat.beta, {scene_.species[0].mass}};
-    std::vector<double> parts(chunks_, 0.0);
-    for (std::size_t c = first_chunk_; c * chunk < hi_; ++c) {
-      CompensatedSum change;
-      noise.kick(store(), c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_, lo_, 0, state_, step, change);
-      parts[c] = change.value();
-    }
-    ranks_.sum(parts);
-    CompensatedSum total;
-    for (const double x : parts) total.add(x);
-    return total.value();
-  }
-
   /// Moments of all particles about `centre`: compensated sums per chunk, then over the chunks in order.
-  SpeciesMoments moments(const Vec3& centre) {
+  template <class Store>
+  SpeciesMoments moments_about(const Store& store, const Vec3& centre) const {
     constexpr std::size_t fields = 6;
     std::vector<double> parts(fields * chunks_, 0.0);
     for (std::size_t c = first_chunk_; c * chunk < hi_; ++c) {
-      const SpeciesMoments m = species_moments(store(), centre, c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_);
+      const SpeciesMoments m = species_moments(store, centre, c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_);
       const double values[fields] = {m.sum_c2, m.sum_c4, m.sum_c6, m.sum_c.x, m.sum_c.y, m.sum_c.z};
       std::copy(values, values + fields, parts.begin() + static_cast<std::ptrdiff_t>(fields * c));
     }
@@ -195,58 +213,13 @@ class SpreadDsmc {
     return m;
   }
 
-  double log_temperature() const noexcept {
-    return state_.scale.log_temperature(twice_energy_ / (3.0 * static_cast<double>(n_)));
-  }
-  double step_length() const noexcept {
-    if (scene_.run.dt_scaling == DtScaling::fixed) return scene_.run.dt;
-    return scene_.run.dt * std::exp(0.5 * (log_temperature0_ - log_temperature()));
-  }
-
-  void step(double dt) {
-    const double u_dt = std::exp(kernel_.lambda * state_.scale.log_u + std::log(dt));
-    // 1/2 (N - 1) omega_max dt candidates with the fraction carried (schemes/dsmc.hpp)
-    const double wanted = 0.5 * static_cast<double>(n_ - 1) * omega_max_ * u_dt + carried_;
-    if (!(wanted < static_cast<double>(RandomStream::counter_limit / 8)))
-      throw std::runtime_error("time step too large: " + std::to_string(wanted) + " collision candidates in one step");
-    const double whole = std::floor(wanted);
-    carried_ = wanted - whole;
-    const auto count = static_cast<std::size_t>(whole);
-
-    CollisionTally tally;
-    double counts[2] = {0.0, 0.0};  // collisions, candidates above the majorant (this rank's)
-    double above = 0.0;             // the largest omega above the majorant
-    std::uint32_t waves = 0;
-    for (std::size_t first = 0; first < count; first += segment)
-      waves += collide_segment(first, std::min(segment, count - first), tally.twice_energy_loss, counts, above);
-    ranks_.sum(counts);
-    tally.candidates = count;
-    tally.collisions = static_cast<std::uint64_t>(counts[0]);
-    tally.majorant_updates = static_cast<std::uint64_t>(counts[1]);
-    omega_max_ = std::max(omega_max_, ranks_.max(above));  // the raise, from the next step on
-    waves_ += waves;
-
-    twice_energy_ -= tally.twice_energy_loss;
-    const StepContext after{dt, twice_energy_, tally.twice_energy_loss, &rng_};
-    if (scene_.thermostat.kind == ThermostatKind::gaussian)
-      twice_energy_ +=
-          GaussianThermostat{scene_.thermostat.zeta_is_cooling_rate, scene_.thermostat.zeta}.apply(state_, after);
-    if (scene_.thermostat.kind == ThermostatKind::white_noise) twice_energy_ += white_noise(after);
-    total_.candidates += tally.candidates;
-    total_.collisions += tally.collisions;
-    total_.majorant_updates += tally.majorant_updates;
-    total_.twice_energy_loss += tally.twice_energy_loss;
-    ++state_.step;
-    if (twice_energy_ < reference_twice_energy_ / rescale_factor ||
-        twice_energy_ > reference_twice_energy_ * rescale_factor)
-      rescale();
-  }
-
   /// Candidates [first, first + m) of the step: drawn, given their owners and waves (the same on every rank),
   /// then done wave by wave. Adds their energy losses to `loss_sum` in list order (as the one-process stage
   /// sums them); returns the number of waves.
-  std::uint32_t collide_segment(std::size_t first, std::size_t m, double& loss_sum, double (&counts)[2],
-                                double& above) {
+  template <class Kernel, class Store>
+  std::uint32_t collide_segment(Store& store, std::uint64_t step, const RandomStream& rng, const Kernel& kernel,
+                                const PairCoefficients& pair, double omega_max, std::size_t first, std::size_t m,
+                                double& loss_sum, double (&counts)[2], double& above) {
     k_.resize(m);
     l_.resize(m);
     rk_.resize(m);
@@ -256,10 +229,10 @@ class SpreadDsmc {
     std::uint32_t waves = 0;
     constexpr std::size_t batch = 64;
     std::array<std::uint64_t, batch> steps, index;
-    steps.fill(state_.step);
+    steps.fill(step);
     for (std::size_t j0 = 0; j0 < m; j0 += batch) {
       for (std::size_t b = 0; b < batch; ++b) index[b] = 2 * (first + j0 + b);  // block 2s (past the end: unused)
-      const RandomBlocks<batch> w = rng_.blocks(RngPurpose::collision_pair, 0, steps, index);
+      const RandomBlocks<batch> w = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
       const std::size_t in_batch = std::min(batch, m - j0);
       for (std::size_t b = 0; b < in_batch; ++b) {
         const std::size_t j = j0 + b;
@@ -314,25 +287,25 @@ class SpreadDsmc {
       own.clear();
       for (std::size_t i = from; i < to; ++i) {  // partners held here for candidates done elsewhere
         const Queued& c = queue_[i];
-        if (c.rl == me && c.rk != me) push(out[static_cast<std::size_t>(c.rk)], store().velocity(c.l - lo_));
+        if (c.rl == me && c.rk != me) push(out[static_cast<std::size_t>(c.rk)], store.velocity(c.l - lo_));
         if (c.rk == me) own.push_back(i);
       }
       expect(from, to, true);
       ranks_.exchange(out, in);
       for (auto& b : out) b.clear();
-      second_blocks(first, own, words);
+      second_blocks(rng, step, first, own, words);
       constexpr std::size_t ahead = 16;  // records prefetched this many candidates ahead
-      for (std::size_t o = 0; o < std::min(ahead, own.size()); ++o) prefetch(queue_[own[o]]);
+      for (std::size_t o = 0; o < std::min(ahead, own.size()); ++o) prefetch(store, queue_[own[o]]);
       for (std::size_t o = 0; o < own.size(); ++o) {
-        if (o + ahead < own.size()) prefetch(queue_[own[o + ahead]]);
+        if (o + ahead < own.size()) prefetch(store, queue_[own[o + ahead]]);
         const Queued& c = queue_[own[o]];
-        Vec3 vk = store().velocity(c.k - lo_);
-        Vec3 vl = c.rl == me ? store().velocity(c.l - lo_)
+        Vec3 vk = store.velocity(c.k - lo_);
+        Vec3 vl = c.rl == me ? store.velocity(c.l - lo_)
                              : pull(in[static_cast<std::size_t>(c.rl)], read[static_cast<std::size_t>(c.rl)]);
-        loss[c.j] = collide(words[o], vk, vl, counts, above);
-        store().set_velocity(c.k - lo_, vk);
+        loss[c.j] = collide_candidate(words[o], vk, vl, kernel, pair, omega_max, counts, above);
+        store.set_velocity(c.k - lo_, vk);
         if (c.rl == me)
-          store().set_velocity(c.l - lo_, vl);
+          store.set_velocity(c.l - lo_, vl);
         else
           push(out[static_cast<std::size_t>(c.rl)], vl);
       }
@@ -341,8 +314,7 @@ class SpreadDsmc {
       for (std::size_t i = from; i < to; ++i) {
         const Queued& c = queue_[i];
         if (c.rl == me && c.rk != me)
-          store().set_velocity(c.l - lo_,
-                               pull(in[static_cast<std::size_t>(c.rk)], read[static_cast<std::size_t>(c.rk)]));
+          store.set_velocity(c.l - lo_, pull(in[static_cast<std::size_t>(c.rk)], read[static_cast<std::size_t>(c.rk)]));
       }
     }
     ranks_.sum(loss);  // one nonzero per candidate: the owner's
@@ -352,15 +324,16 @@ class SpreadDsmc {
 
   /// Block 2s + 1 (direction and acceptance) of each of the candidates `own` of the segment starting at
   /// candidate `first`, 64 at a time in SIMD (the same words as one at a time).
-  void second_blocks(std::size_t first, const std::vector<std::size_t>& own, std::vector<RandomBlock>& words) const {
+  void second_blocks(const RandomStream& rng, std::uint64_t step, std::size_t first,
+                     const std::vector<std::size_t>& own, std::vector<RandomBlock>& words) const {
     constexpr std::size_t batch = 64;
     words.resize(own.size());
     std::array<std::uint64_t, batch> steps, index;
-    steps.fill(state_.step);
+    steps.fill(step);
     for (std::size_t o0 = 0; o0 < own.size(); o0 += batch) {
       const std::size_t n = std::min(batch, own.size() - o0);
       for (std::size_t b = 0; b < batch; ++b) index[b] = 2 * (first + queue_[own[o0 + std::min(b, n - 1)]].j) + 1;
-      const RandomBlocks<batch> w = rng_.blocks(RngPurpose::collision_pair, 0, steps, index);
+      const RandomBlocks<batch> w = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
       for (std::size_t b = 0; b < n; ++b) words[o0 + b] = {w.word[0][b], w.word[1][b], w.word[2][b], w.word[3][b]};
     }
   }
@@ -368,27 +341,30 @@ class SpreadDsmc {
   /// A candidate on its two velocities with its block 2s + 1 `w`: schemes/collision_stage.hpp's acceptance
   /// on the mean over sigma-hat, then sigma-hat given the collision, against the step's majorant.
   /// Returns 2 (energy loss), 0 without a collision.
-  double collide(const RandomBlock& w, Vec3& vk, Vec3& vl, double (&counts)[2], double& above) const {
+  template <class Kernel>
+  static double collide_candidate(const RandomBlock& w, Vec3& vk, Vec3& vl, const Kernel& kernel,
+                                  const PairCoefficients& pair, double omega_max, double (&counts)[2], double& above) {
     const Vec3 g = vk - vl;
     const double g2 = norm2(g);
-    const double omega = pair_.rate_prefactor * kernel_.mean_rate(g2);
-    if (omega > omega_max_) {
+    const double omega = pair.rate_prefactor * kernel.mean_rate(g2);
+    if (omega > omega_max) {
       above = std::max(above, omega);
       counts[1] += 1.0;
-    } else if (uniform_open(w[2]) * omega_max_ > omega) {
+    } else if (uniform_open(w[2]) * omega_max > omega) {
       return 0.0;
     }
     const ImpactDirection d = impact_direction(g, std::sqrt(g2), unit_vector(uniform_open(w[0]), uniform_open(w[1])));
     if (!(d.g_sigma > 0.0)) return 0.0;
-    inelastic_collision(vk, vl, d.sigma, d.g_sigma, pair_);
+    inelastic_collision(vk, vl, d.sigma, d.g_sigma, pair);
     counts[0] += 1.0;
-    return 2.0 * pair_.energy_loss * d.g_sigma * d.g_sigma;
+    return 2.0 * pair.energy_loss * d.g_sigma * d.g_sigma;
   }
 
   /// Hint that a candidate's records held here will be read soon.
-  void prefetch(const Queued& c) noexcept {
-    store().prefetch(c.k - lo_);
-    if (c.rl == me_) store().prefetch(c.l - lo_);
+  template <class Store>
+  void prefetch(const Store& store, const Queued& c) const noexcept {
+    store.prefetch(c.k - lo_);
+    if (c.rl == me_) store.prefetch(c.l - lo_);
   }
 
   static void push(std::vector<double>& b, const Vec3& v) { b.insert(b.end(), {v.x, v.y, v.z}); }
@@ -396,19 +372,6 @@ class SpreadDsmc {
     const Vec3 v{b[at], b[at + 1], b[at + 2]};
     at += 3;
     return v;
-  }
-
-  /// Dsmc::rescale over all ranks: removes the centre-of-mass velocity, unit stored temperature.
-  void rescale() {
-    const GasTotals t = gas_totals(scene_, {moments({})});
-    const Vec3 v_cm = (1.0 / t.mass) * t.momentum;
-    momentum_removed_ += norm(t.momentum) / std::sqrt(t.mass * t.twice_energy);
-    const double twice_energy = t.twice_energy - norm2(t.momentum) / t.mass;
-    const double s = std::sqrt(3.0 * static_cast<double>(n_) / twice_energy);
-    store().for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
-    state_.scale.log_u -= std::log(s);
-    twice_energy_ = reference_twice_energy_ = 3.0 * static_cast<double>(n_);
-    ++rescales_;
   }
 
   /// The latest wave of each particle of the step's candidates: open addressing over the particle index,
@@ -444,24 +407,12 @@ class SpreadDsmc {
     unsigned shift_ = 60;
   };
 
-  const Scene& scene_;
   const Ranks& ranks_;
   int me_, size_;  // this rank and the number of ranks
-  RandomStream rng_;
-  Kernel kernel_;
-  PairCoefficients pair_;
-  std::size_t n_;
+  std::size_t n_;  // particles of the whole system
   double mass_;
   std::size_t chunks_ = 0, first_chunk_ = 0;
   std::size_t lo_ = 0, hi_ = 0;  // this rank's particles: global indices [lo_, hi_)
-  GasState state_;               // one species: this rank's particles only
-  double omega_max_ = 0.0, initial_omega_max_ = 0.0;
-  double carried_ = 0.0;
-  CollisionTally total_;
-  double twice_energy_ = 0.0, reference_twice_energy_ = 0.0;
-  double log_temperature0_ = 0.0;
-  double momentum_removed_ = 0.0;
-  std::uint64_t rescales_ = 0;
   std::uint64_t waves_ = 0;
   // A segment's candidates (kept to reuse their memory): particles, owners, waves, in list order; then
   // in wave order, with j the position in the list.
@@ -471,26 +422,5 @@ class SpreadDsmc {
   std::vector<Queued> queue_;
   LatestWave latest_;
 };
-
-/// One replica from t = 0 to t_end over `ranks`, observed at the sample times (every rank returns it).
-template <class Kernel>
-ReplicaSeries run_spread_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
-                                 const Ranks& ranks, const std::function<void()>& on_sample) {
-  SpreadDsmc<Kernel> sim(scene, replica, ranks);
-  ReplicaSeries series;
-  series.species.resize(1);
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    sim.advance_to(times[k]);
-    const double summed = sim.observe(series, k >= first_stationary_sample(times.size()));
-    series.energy_residual =
-        std::max(series.energy_residual.value_or(0.0), std::abs(sim.tracked_twice_energy() / summed - 1.0));
-    series.collisions.push_back(static_cast<double>(sim.tally().collisions));
-    if (on_sample) on_sample();
-  }
-  series.pair_collisions.push_back(sim.tally().collisions);
-  series.majorant_growth.push_back(sim.omega_max() / sim.initial_omega_max());
-  record_run_counters(sim, series);
-  return series;
-}
 
 }  // namespace granmc

@@ -1,0 +1,48 @@
+#pragma once
+// What a collision kernel is, as C++20 concepts: the contract the schemes rely on, checked where a kernel is
+// used (schemes/dsmc.hpp, schemes/event_white_noise.hpp) and by every alternative of the run plan.
+//
+// A time-stepped kernel (the impact-direction form of 000 sec. 3: collide/hard_sphere.hpp,
+// maxwell_pseudomolecules.hpp, variable_hard_spheres.hpp) gives the velocity-dependent factor of the rate
+// omega_kl of a pair with direction sigma-hat; the pair's constant prefactor lives in PairCoefficients. It has
+// lambda (omega scales as |g|^lambda, so a physical rate is u^lambda times the stored-unit one),
+// rate(g.sigma, |g|^2), bound(U) >= rate for relative speeds up to U, and from_scene(scene) (the kernel's
+// parameters). Every kernel weighs sigma-hat by Theta(g.sigma) (g.sigma), so its mean over sigma-hat uniform
+// on the sphere is mean_rate(|g|^2) = |g|^lambda / 4 (the mean of Theta(g.sigma) (g.sigma) is |g| / 4), with
+// mean_bound(U) >= mean_rate up to U (schemes/collision_stage.hpp accepts a pair with probability
+// mean_rate / omega_max). mean_rate takes a double or an xsimd batch of them (the stage screens a batch's
+// candidates in SIMD), and screen_candidates says whether that screen can reject any: false when the mean
+// rate is a constant, so that every candidate collides. name and explanation are what `--explain` prints.
+//
+// An event kernel (001 eqs. 6-8, collide/isotropic_kernels.hpp) is B = rate |u|^lambda with e uniform: it
+// has lambda(), constant_rate (every candidate is real, no majorant) and acceptance_thresholds, which maps a
+// batch of uniforms u to u^(1 / lambda) for the test u^(1 / lambda) < |u| / U_max (001 eq. 26).
+#include <concepts>
+#include <span>
+
+#include "kernel/core/scene.hpp"
+
+namespace granmc {
+
+template <class K>
+concept SteppedKernel = requires(const K& kernel, double g_sigma, double g2, double speed, const Scene& scene) {
+  { K::name } -> std::convertible_to<const char*>;
+  { K::explanation } -> std::convertible_to<const char*>;
+  { kernel.lambda } -> std::convertible_to<double>;
+  { K::screen_candidates } -> std::convertible_to<bool>;
+  { K::from_scene(scene) } -> std::same_as<K>;
+  { kernel.rate(g_sigma, g2) } -> std::same_as<double>;
+  { kernel.bound(speed) } -> std::same_as<double>;
+  { kernel.mean_rate(g2) } -> std::same_as<double>;
+  { kernel.mean_bound(speed) } -> std::same_as<double>;
+};
+
+template <class K>
+concept EventKernel = requires(const K& kernel, std::span<double, 64> uniforms) {
+  { K::name } -> std::convertible_to<const char*>;
+  { K::constant_rate } -> std::convertible_to<bool>;
+  { kernel.lambda() } -> std::same_as<double>;
+  kernel.acceptance_thresholds(uniforms);
+};
+
+}  // namespace granmc
