@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
@@ -13,16 +14,35 @@
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
+#include "tests/test_scenes.hpp"
 
 using namespace granmc;
+using granmc::testing::scene_from_toml;
 
 namespace {
 
+/// Two species for pair_coefficients, which reads the species and [collision] only (the run is never made).
 Scene two_species(double m1, double m2, double alpha) {
-  Scene s;
-  s.species = {{"a", m1, 1.0, 1.0, 100}, {"b", m2, 2.0, 1.0, 100}};
-  s.collision.restitution = {{{alpha, alpha}, {alpha, alpha}}};
-  return s;
+  constexpr std::string_view text = R"(
+    [run]
+    t_end = 1.0
+    dt = 1.0
+
+    [[species]]
+    name = "a"
+    mass = ${m1}
+    particles = 100
+
+    [[species]]
+    name = "b"
+    mass = ${m2}
+    diameter = 2.0
+    particles = 100
+
+    [collision]
+    restitution = ${alpha}
+  )";
+  return scene_from_toml(text, {{"m1", m1}, {"m2", m2}, {"alpha", alpha}});
 }
 
 }  // namespace
@@ -65,6 +85,8 @@ TEST(CollisionRule, ConservesMomentumAndLosesTheRightEnergy) {
 
 TEST(CollisionRule, PairCoefficientsFollowThePaper) {
   Scene s = two_species(1.0, 3.0, 0.5);
+  // Set after parsing: n_0/n_1 = 4 with N_0 = N_1 = 100, which the scene file refuses (each simulated particle
+  // must carry the same weight); pair_coefficients reads the densities and not the particle numbers.
   s.species[0].density = 2.0;
   s.species[1].density = 0.5;
   const auto pairs = pair_coefficients(s);
@@ -88,7 +110,7 @@ TEST(ImpactDirection, HasTheDensityOfTheCollisionKernel) {
   constexpr double chi2_999_19 = 43.8202;
   const RandomStream rng(20261201, 3);
   for (const Vec3 g : {Vec3{0.0, 0.0, 2.5}, Vec3{-1.3, 0.4, 0.9}, Vec3{3e-9, -2e-9, 1e-9}}) {
-    SCOPED_TRACE(testing::Message() << "g = (" << g.x << ", " << g.y << ", " << g.z << ")");
+    SCOPED_TRACE(::testing::Message() << "g = (" << g.x << ", " << g.y << ", " << g.z << ")");
     const double g_norm = norm(g);
     const Vec3 e3 = (1.0 / g_norm) * g;  // a frame about g-hat for the azimuth
     const Vec3 helper = std::abs(e3.x) < 0.9 ? Vec3{1.0, 0.0, 0.0} : Vec3{0.0, 1.0, 0.0};

@@ -3,15 +3,49 @@
 // screen of a batch's candidates in SIMD leaves out only candidates that the full test would reject, and
 // the impact directions it computes ahead for those that share no particle are the ones the full test
 // would compute: the same bits as the stage without it.
+#include <string>
+#include <string_view>
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/initial_state.hpp"
+#include "tests/test_scenes.hpp"
 
 using namespace granmc;
+using granmc::testing::scene_from_toml;
 
 namespace {
+
+/// A gas of the `species` tables (TOML) for the collision stage alone: the tests call collide_step
+/// themselves, so the run (t_end, dt) is never read; the parser needs it all the same.
+Scene gas_scene(std::string_view species) {
+  constexpr std::string_view text = R"(
+    [run]
+    t_end = 1.0
+    dt = 1.0
+
+    [collision]
+    restitution = [[0.7, 0.8], [0.8, 0.9]]
+  )";
+  return scene_from_toml(std::string(text) + std::string(species));
+}
+
+/// By default few particles and many candidates: batches of 64 are full of shared particles.
+constexpr std::string_view few_particles = R"(
+  [[species]]
+  name = "a"
+  particles = 40
+
+  [[species]]
+  name = "b"
+  mass = 3.0
+  diameter = 1.5
+  density = 0.5
+  particles = 20
+)";
 
 struct Gas {
   Scene scene;
@@ -21,10 +55,7 @@ struct Gas {
   std::vector<double> omega_max;
   std::vector<CollisionTally> tallies;
 
-  // By default few particles and many candidates: batches of 64 are full of shared particles.
-  explicit Gas(std::vector<SpeciesConfig> species = {{"a", 1.0, 1.0, 1.0, 40}, {"b", 3.0, 1.5, 0.5, 20}}) {
-    scene.species = std::move(species);
-    scene.collision.restitution = {{{0.7, 0.8}, {0.8, 0.9}}};
+  explicit Gas(Scene s = gas_scene(few_particles)) : scene(std::move(s)) {
     pairs = pair_coefficients(scene);
     state = maxwellian_state(scene, rng);
     omega_max.assign(pairs.size(), 1.0);  // low on purpose: the majorant update runs too
@@ -97,10 +128,27 @@ TEST(CollisionStage, TheScreenLeavesOutOnlyRejectedCandidatesInALargeGas) {
   // Thousands of particles: most candidates that pass the screen share no particle with an earlier one of
   // their batch, and their impact directions are computed a register at a time before the batch collides.
   // A mixture and one species (the stage's one-pair form).
-  const std::vector<std::vector<SpeciesConfig>> gases{{{"a", 1.0, 1.0, 1.0, 3000}, {"b", 3.0, 1.5, 0.5, 1000}},
-                                                      {{"a", 1.0, 1.0, 1.0, 4000}}};
-  for (const auto& species : gases) {
-    Gas screened(species), full(species), one(species);
+  Scene mixture = gas_scene(R"(
+    [[species]]
+    name = "a"
+    particles = 3000
+
+    [[species]]
+    name = "b"
+    mass = 3.0
+    diameter = 1.5
+    density = 0.5
+    particles = 1500
+  )");
+  // Set after parsing: N_0/N_1 = 3 with n_0/n_1 = 2, which the scene file refuses (unequal particle weights);
+  // the stage runs on any particle numbers, and these are the ones the test has always used.
+  mixture.species[1].particles = 1000;
+  const Scene one_species = gas_scene(R"(
+    [[species]]
+    particles = 4000
+  )");
+  for (const Scene& gas : {mixture, one_species}) {
+    Gas screened(gas), full(gas), one(gas);
     screened.run<64>(5);
     full.run<64, HardSphereUnscreened>(5);
     one.run<1>(5);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
@@ -12,27 +13,40 @@
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/intruder.hpp"
 #include "tests/intruder_averages.hpp"
+#include "tests/statistical_check.hpp"
+#include "tests/test_scenes.hpp"
 
 using namespace granmc;
+using granmc::testing::scene_from_toml;
 using granmc::testing::velocity_average;
+using granmc::testing::within_ci;
 
 namespace {
 
-Scene intruder_scene(BathKind bath, double mass, double alpha, double t_end) {
-  Scene s;
-  s.run.method = Method::gillespie;
-  s.run.seed = 4242;
-  s.run.replicas = 32;  // enough for the empirical variance behind the CI to be itself reliable
-  s.run.t_end = t_end;
-  s.run.samples = static_cast<int>(t_end);  // one observation per unit time, about one per collision
-  IntruderConfig in;
-  in.mass = mass;
-  in.restitution = alpha;
-  in.bath = bath;
-  in.bath_a = 0.8;
-  in.bath_density = 1.5;
-  s.intruder = in;
-  return s;
+/// `bath` is intruder.bath: "gaussian" or "power-law".
+Scene intruder_scene(const char* bath, double mass, double alpha, double t_end, int replicas = 32) {
+  // 32 replicas: enough for the empirical variance behind the CI to be itself reliable.
+  constexpr std::string_view text = R"(
+    [run]
+    method = "gillespie"
+    seed = 4242
+    replicas = ${replicas}
+    t_end = ${t_end}
+    samples = ${samples}  # one observation per unit time, about one per collision
+
+    [intruder]
+    mass = ${mass}
+    restitution = ${alpha}
+    bath = "${bath}"
+    bath_a = 0.8
+    bath_density = 1.5
+  )";
+  return scene_from_toml(text, {{"replicas", replicas},
+                                {"t_end", t_end},
+                                {"samples", static_cast<int>(t_end)},
+                                {"mass", mass},
+                                {"alpha", alpha},
+                                {"bath", bath}});
 }
 
 }  // namespace
@@ -40,18 +54,22 @@ Scene intruder_scene(BathKind bath, double mass, double alpha, double t_end) {
 TEST(Intruder, GaussianBathTemperatureRatioIsExact) {
   for (double mass : {0.2, 1.0, 5.0}) {
     for (double alpha : {0.0, 0.5, 0.9, 1.0}) {
-      const Scene s = intruder_scene(BathKind::gaussian, mass, alpha, 60000.0);
+      const Scene s = intruder_scene("gaussian", mass, alpha, 60000.0);
       const RunResult r = run_scene(s, {});
       const double tb = theory::bath_temperature(*s.intruder);
       const MeanCI t = velocity_average(r, [&](double v) { return mass * v * v / tb; });
       const double exact = *theory::intruder_temperature_ratio(*s.intruder);  // 002 eq. (22)
       std::printf("[ measured ] M = %.1f alpha = %.1f: T/T_B = %.4f +- %.4f, exact %.4f\n", mass, alpha, t.mean, t.ci,
                   exact);
-      EXPECT_NEAR(t.mean, exact, t.ci) << "M = " << mass << ", alpha = " << alpha;
-      EXPECT_LT(t.ci, 0.02 * exact);
+      // Bound: T/T_B resolved to 2 % (measured today 0.4 % to 0.9 % of it).
+      EXPECT_TRUE(within_ci("T/T_B", t, exact, 0.02 * exact)) << "M = " << mass << ", alpha = " << alpha;
       // The law is Gaussian (Martin and Piasecki): <v^4> = 3 <v^2>^2.
       const MeanCI v4 = velocity_average(r, [&](double v) { return std::pow(mass * v * v / (exact * tb), 2); });
-      EXPECT_NEAR(v4.mean, 3.0, v4.ci) << "M = " << mass << ", alpha = " << alpha;
+      // Bound: for a Gaussian v the standard deviation of v^4 / <v^2>^2 is sqrt(48) times that of v^2 / <v^2>
+      // (96 against 2 in variance), and both are time averages of the same run: the CI of v4 is about sqrt(48)
+      // times the relative CI of T (measured today 0.82 to 1.10 times); bound 1.5x.
+      EXPECT_TRUE(within_ci("<v^4> / <v^2>^2", v4, 3.0, 1.5 * std::sqrt(48.0) * t.ci / exact))
+          << "M = " << mass << ", alpha = " << alpha;
     }
   }
 }
@@ -61,7 +79,7 @@ TEST(Intruder, PowerLawBathWithMassEqualToAlphaGivesTheBathLaw) {
   // T = M <v1^2> = alpha / a = alpha T_B. Checked on the distribution (bounded observables: P(|v| < c) per
   // replica), since <v^4> is infinite and the CI of T = M <v^2> would not be trustworthy.
   const double alpha = 0.5;
-  const Scene s = intruder_scene(BathKind::power_law, alpha, alpha, 60000.0);
+  const Scene s = intruder_scene("power-law", alpha, alpha, 60000.0);
   const RunResult r = run_scene(s, {});
   const double a = s.intruder->bath_a;  // the intruder's law: eq. (23) with the bath's a
   for (double c : {0.3, 0.8, 1.5, 3.0, 8.0}) {
@@ -69,7 +87,9 @@ TEST(Intruder, PowerLawBathWithMassEqualToAlphaGivesTheBathLaw) {
     const double x = std::sqrt(a) * c;
     const double exact = 2.0 * std::numbers::sqrt2 / std::numbers::pi * PowerLawBath::quartic_integral(x);
     std::printf("[ measured ] P(|v| < %.1f) = %.4f +- %.4f, exact %.4f\n", c, p.mean, p.ci, exact);
-    EXPECT_NEAR(p.mean, exact, p.ci) << "c = " << c;
+    // Bound: the CI of a time average of the indicator scales with its standard deviation sqrt(p (1 - p));
+    // measured today 0.0030 to 0.0040 times that over the five c; bound 1.5x the largest.
+    EXPECT_TRUE(within_ci("P(|v| < c)", p, exact, 0.0060 * std::sqrt(exact * (1.0 - exact)))) << "c = " << c;
   }
   const double tb = theory::bath_temperature(*s.intruder);
   const MeanCI t = velocity_average(r, [&](double v) { return alpha * v * v / tb; });
@@ -77,8 +97,7 @@ TEST(Intruder, PowerLawBathWithMassEqualToAlphaGivesTheBathLaw) {
 }
 
 TEST(Intruder, OneAndTwoThreadsGiveTheSameBits) {
-  Scene s = intruder_scene(BathKind::power_law, 0.7, 0.3, 2000.0);
-  s.run.replicas = 3;
+  const Scene s = intruder_scene("power-law", 0.7, 0.3, 2000.0, 3);
   RunOptions one, two;
   one.threads = 1;
   two.threads = 2;
@@ -97,7 +116,7 @@ TEST(Intruder, HardCasesStayFiniteAndExact) {
   // longer (about 200 relaxation times per replica).
   for (double mass : {1e-3, 1e3}) {
     for (double alpha : {0.0, 0.5}) {
-      const Scene s = intruder_scene(BathKind::gaussian, mass, alpha, mass > 1.0 ? 200000.0 : 20000.0);
+      const Scene s = intruder_scene("gaussian", mass, alpha, mass > 1.0 ? 200000.0 : 20000.0);
       const RunResult r = run_scene(s, {});
       const double tb = theory::bath_temperature(*s.intruder);
       const MeanCI t = velocity_average(r, [&](double v) { return mass * v * v / tb; });
@@ -105,13 +124,16 @@ TEST(Intruder, HardCasesStayFiniteAndExact) {
       std::printf("[ measured ] M = %g alpha = %.1f: T/T_B = %.5g +- %.2g, exact %.5g\n", mass, alpha, t.mean, t.ci,
                   exact);
       EXPECT_TRUE(std::isfinite(t.mean) && std::isfinite(t.ci));
-      EXPECT_NEAR(t.mean, exact, t.ci) << "M = " << mass << ", alpha = " << alpha;
+      // Bound: measured today 0.8 % of T/T_B for M = 1e-3 and 5.8 % to 7.3 % for M = 1e3 (a run of about 200
+      // relaxation times per replica); bound 1.5x the larger of each mass.
+      const double relative_bound = mass > 1.0 ? 0.11 : 0.0125;
+      EXPECT_TRUE(within_ci("T/T_B", t, exact, relative_bound * exact)) << "M = " << mass << ", alpha = " << alpha;
       for (const ReplicaSeries& rep : r.replicas)
         for (double v : rep.intruder->velocity) ASSERT_TRUE(std::isfinite(v));
     }
   }
   // The power-law bath's heavy tail with a perfectly inelastic intruder: finite throughout.
-  const Scene s = intruder_scene(BathKind::power_law, 1.0, 0.0, 20000.0);
+  const Scene s = intruder_scene("power-law", 1.0, 0.0, 20000.0);
   const RunResult r = run_scene(s, {});
   for (const ReplicaSeries& rep : r.replicas)
     for (double v : rep.intruder->velocity) ASSERT_TRUE(std::isfinite(v));

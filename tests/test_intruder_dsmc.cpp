@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <numbers>
+#include <string_view>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -19,29 +20,52 @@
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/intruder.hpp"
 #include "tests/intruder_averages.hpp"
+#include "tests/statistical_check.hpp"
+#include "tests/test_scenes.hpp"
 
 using namespace granmc;
+using granmc::testing::scene_from_toml;
 using granmc::testing::velocity_average;
+using granmc::testing::within_ci;
 
 namespace {
 
+/// The [run] keys that a few tests change.
+struct RunKeys {
+  const char* method = "dsmc";
+  std::uint64_t seed = 90210;
+  int replicas = 64;
+};
+
 // Bath as in tests/test_intruder.cpp: a = 0.8, rho = 1.5, so the mean free time 1 / phi(0) is about 1.05.
-Scene intruder_scene(BathKind bath, double mass, double alpha, double t_end, double dt, double sample_spacing) {
-  Scene s;
-  s.run.method = Method::dsmc;
-  s.run.seed = 90210;
-  s.run.replicas = 64;
-  s.run.t_end = t_end;
-  s.run.dt = dt;
-  s.run.samples = static_cast<int>(t_end / sample_spacing);
-  IntruderConfig in;
-  in.mass = mass;
-  in.restitution = alpha;
-  in.bath = bath;
-  in.bath_a = 0.8;
-  in.bath_density = 1.5;
-  s.intruder = in;
-  return s;
+// `bath` is intruder.bath: "gaussian" or "power-law".
+Scene intruder_scene(const char* bath, double mass, double alpha, double t_end, double dt, double sample_spacing,
+                     const RunKeys& run = {}) {
+  constexpr std::string_view text = R"(
+    [run]
+    method = "${method}"
+    seed = ${seed}
+    replicas = ${replicas}
+    t_end = ${t_end}
+    dt = ${dt}
+    samples = ${samples}
+
+    [intruder]
+    mass = ${mass}
+    restitution = ${alpha}
+    bath = "${bath}"
+    bath_a = 0.8
+    bath_density = 1.5
+  )";
+  return scene_from_toml(text, {{"method", run.method},
+                                {"seed", run.seed},
+                                {"replicas", run.replicas},
+                                {"t_end", t_end},
+                                {"dt", dt},
+                                {"samples", static_cast<int>(t_end / sample_spacing)},
+                                {"mass", mass},
+                                {"alpha", alpha},
+                                {"bath", bath}});
 }
 
 /// Through the one dispatch site, as `granmc run` does (method "dsmc" with an [intruder]).
@@ -131,18 +155,21 @@ TEST(IntruderDsmc, GaussianBathTemperatureRatioIsExact) {
       {1e3, 0.0, 200000.0, 10.0, 0.1}, {1e3, 0.5, 150000.0, 10.0, 10.0},
   };
   for (const Case& c : cases) {
-    const Scene s = intruder_scene(BathKind::gaussian, c.mass, c.alpha, c.t_end, c.dt, c.spacing);
+    const Scene s = intruder_scene("gaussian", c.mass, c.alpha, c.t_end, c.dt, c.spacing);
     const RunResult r = run_dsmc_intruder(s);
     const double tb = theory::bath_temperature(*s.intruder);
     const double exact = *theory::intruder_temperature_ratio(*s.intruder);  // 002 eq. (22)
     const MeanCI t = velocity_average(r, [&](double v) { return c.mass * v * v / tb / exact; });
     std::printf("[ measured ] M = %g alpha = %.1f dt = %g: (T/T_B) / exact = %.4f +- %.4f, exact T/T_B = %.5g\n",
                 c.mass, c.alpha, c.dt, t.mean, t.ci, exact);
-    EXPECT_NEAR(t.mean, 1.0, t.ci) << "M = " << c.mass << ", alpha = " << c.alpha;
-    EXPECT_LT(t.ci, 0.05) << "M = " << c.mass << ", alpha = " << c.alpha;
+    // Bound: T/T_B resolved to 5 % (measured today 1.1 % to 4.6 %; the heavy intruder's is the largest).
+    EXPECT_TRUE(within_ci("(T/T_B) / exact", t, 1.0, 0.05)) << "M = " << c.mass << ", alpha = " << c.alpha;
     // The law is Gaussian (Martin and Piasecki): <v^4> = 3 <v^2>^2.
     const MeanCI v4 = velocity_average(r, [&](double v) { return std::pow(c.mass * v * v / (exact * tb), 2); });
-    EXPECT_NEAR(v4.mean, 3.0, v4.ci) << "M = " << c.mass << ", alpha = " << c.alpha;
+    // Bound: for a Gaussian v the standard deviation of v^4 / <v^2>^2 is sqrt(48) times that of v^2 / <v^2>, so
+    // the CI of v4 is about sqrt(48) times that of T (measured today 0.80 to 1.03 times); bound 1.5x.
+    EXPECT_TRUE(within_ci("<v^4> / <v^2>^2", v4, 3.0, 1.5 * std::sqrt(48.0) * t.ci))
+        << "M = " << c.mass << ", alpha = " << c.alpha;
   }
 }
 
@@ -151,7 +178,7 @@ TEST(IntruderDsmc, PowerLawBathWithMassEqualToAlphaGivesTheBathLaw) {
   // T/T_B = alpha. <v^4> is infinite, so the law is checked through bounded observables: P(|v1| < c) and the
   // truncated temperature M <v1^2 [|v1| < c]> / T_B, whose limit c -> infinity is T/T_B = alpha.
   const double alpha = 0.5;
-  const Scene s = intruder_scene(BathKind::power_law, alpha, alpha, 20000.0, 0.5, 1.0);
+  const Scene s = intruder_scene("power-law", alpha, alpha, 20000.0, 0.5, 1.0);
   const RunResult r = run_dsmc_intruder(s);
   const double a = s.intruder->bath_a, tb = theory::bath_temperature(*s.intruder);
   for (double c : {0.3, 0.8, 1.5, 3.0, 8.0}) {
@@ -162,8 +189,15 @@ TEST(IntruderDsmc, PowerLawBathWithMassEqualToAlphaGivesTheBathLaw) {
     std::printf(
         "[ measured ] c = %4.1f: P(|v| < c) = %.4f +- %.4f, exact %.4f; truncated T/T_B = %.4f +- %.4f, exact %.4f\n",
         c, p.mean, p.ci, power_law_probability(x), t.mean, t.ci, t_exact);
-    EXPECT_NEAR(p.mean, power_law_probability(x), p.ci) << "c = " << c;
-    EXPECT_NEAR(t.mean, t_exact, t.ci) << "c = " << c;
+    // Bounds: the CI of a time average scales with the standard deviation of the averaged quantity under the
+    // stationary law, sqrt(p (1 - p)) for the indicator and, for the truncated temperature y = alpha x^2 [|x| < X],
+    // sqrt(<y^2> - <y>^2) with <y^2> = alpha^2 (2 sqrt 2 / pi) (X - A(X)); measured today 0.0033 to 0.0039 and
+    // 0.0030 to 0.0046 times these over the five c; bounds 1.5x the largest.
+    const double p_exact = power_law_probability(x);
+    const double y2 =
+        alpha * alpha * 2.0 * std::numbers::sqrt2 / std::numbers::pi * (x - PowerLawBath::quartic_integral(x));
+    EXPECT_TRUE(within_ci("P(|v| < c)", p, p_exact, 0.0059 * std::sqrt(p_exact * (1.0 - p_exact)))) << "c = " << c;
+    EXPECT_TRUE(within_ci("truncated T/T_B", t, t_exact, 0.0069 * std::sqrt(y2 - t_exact * t_exact))) << "c = " << c;
   }
   const MeanCI t = velocity_average(r, [&](double v) { return alpha * v * v / tb; });
   std::printf("[ measured ] T/T_B = %.4f +- %.4f (heavy tail: CI indicative), exact %.4f\n", t.mean, t.ci, alpha);
@@ -172,21 +206,21 @@ TEST(IntruderDsmc, PowerLawBathWithMassEqualToAlphaGivesTheBathLaw) {
 TEST(IntruderDsmc, AgreesWithGillespie) {
   const double tb_gauss = 0.5 / 0.8, tb_power = 1.0 / 0.8;
   {  // Gaussian bath, M = 1, alpha = 0.5: T/T_B.
-    Scene s = intruder_scene(BathKind::gaussian, 1.0, 0.5, 10000.0, 0.1, 1.0);
+    const Scene s = intruder_scene("gaussian", 1.0, 0.5, 10000.0, 0.1, 1.0);
+    // Another seed: independent of the DSMC run (both start from the initial_velocity block).
+    const Scene sg = intruder_scene("gaussian", 1.0, 0.5, 10000.0, 0.1, 1.0, {.method = "gillespie", .seed = 90211});
     const MeanCI d = velocity_average(run_dsmc_intruder(s), [&](double v) { return v * v / tb_gauss; });
-    s.run.method = Method::gillespie;
-    s.run.seed += 1;  // independent of the DSMC run (both start from the initial_velocity block)
-    const MeanCI g = velocity_average(run_scene(s, {}), [&](double v) { return v * v / tb_gauss; });
+    const MeanCI g = velocity_average(run_scene(sg, {}), [&](double v) { return v * v / tb_gauss; });
     std::printf("[ measured ] Gaussian bath: T/T_B DSMC %.4f +- %.4f, Gillespie %.4f +- %.4f\n", d.mean, d.ci, g.mean,
                 g.ci);
-    EXPECT_NEAR(d.mean, g.mean, combined_ci(d, g));
+    // Bound: measured today 0.0078; bound 1.5x.
+    EXPECT_TRUE(within_ci("T/T_B, DSMC against Gillespie", d.mean, combined_ci(d, g), g.mean, 0.0118));
   }
   {  // Power-law bath, M = 1, alpha = 0.5 (no exact result): P(|v1| < c) and the truncated temperature.
-    Scene s = intruder_scene(BathKind::power_law, 1.0, 0.5, 10000.0, 0.1, 1.0);
+    const Scene s = intruder_scene("power-law", 1.0, 0.5, 10000.0, 0.1, 1.0);
+    const Scene sg = intruder_scene("power-law", 1.0, 0.5, 10000.0, 0.1, 1.0, {.method = "gillespie", .seed = 90211});
     const RunResult dsmc = run_dsmc_intruder(s);
-    s.run.method = Method::gillespie;
-    s.run.seed += 1;
-    const RunResult gillespie = run_scene(s, {});
+    const RunResult gillespie = run_scene(sg, {});
     for (double c : {0.5, 1.5, 8.0}) {
       auto prob = [&](double v) { return std::fabs(v) < c ? 1.0 : 0.0; };
       auto temp = [&](double v) { return std::fabs(v) < c ? v * v / tb_power : 0.0; };
@@ -196,25 +230,30 @@ TEST(IntruderDsmc, AgreesWithGillespie) {
           "[ measured ] power-law bath, c = %.1f: P(|v| < c) DSMC %.4f +- %.4f, Gillespie %.4f +- %.4f; "
           "truncated T/T_B DSMC %.4f +- %.4f, Gillespie %.4f +- %.4f\n",
           c, pd.mean, pd.ci, pg.mean, pg.ci, td.mean, td.ci, tg.mean, tg.ci);
-      EXPECT_NEAR(pd.mean, pg.mean, combined_ci(pd, pg)) << "c = " << c;
-      EXPECT_NEAR(td.mean, tg.mean, combined_ci(td, tg)) << "c = " << c;
+      // Bounds (no exact law here): the probability's CI scales with sqrt(p (1 - p)), measured today 0.0076 to
+      // 0.0086 times that; the truncated temperature's is 1.2 % to 2.2 % of its value; bounds 1.5x the largest.
+      const double p = pg.mean;
+      EXPECT_TRUE(within_ci("P(|v| < c), DSMC against Gillespie", pd.mean, combined_ci(pd, pg), p,
+                            0.0129 * std::sqrt(p * (1.0 - p))))
+          << "c = " << c;
+      EXPECT_TRUE(
+          within_ci("truncated T/T_B, DSMC against Gillespie", td.mean, combined_ci(td, tg), tg.mean, 0.034 * tg.mean))
+          << "c = " << c;
     }
   }
 }
 
 TEST(IntruderDsmc, OutputsAreFiniteInTheHardCases) {
   struct Case {
-    BathKind bath;
+    const char* bath;
     double mass, alpha, dt;
   };
   const Case cases[] = {
-      {BathKind::gaussian, 1e-3, 0.0, 1e-3}, {BathKind::gaussian, 1e3, 0.0, 1e3},
-      {BathKind::gaussian, 1e-3, 1.0, 1e3},  {BathKind::power_law, 1e-3, 0.0, 1e-3},
-      {BathKind::power_law, 1e-3, 1.0, 1e3}, {BathKind::power_law, 1e3, 0.0, 0.1},
+      {"gaussian", 1e-3, 0.0, 1e-3},  {"gaussian", 1e3, 0.0, 1e3},   {"gaussian", 1e-3, 1.0, 1e3},
+      {"power-law", 1e-3, 0.0, 1e-3}, {"power-law", 1e-3, 1.0, 1e3}, {"power-law", 1e3, 0.0, 0.1},
   };
   for (const Case& c : cases) {
-    Scene s = intruder_scene(c.bath, c.mass, c.alpha, 2000.0, c.dt, 1.0);
-    s.run.replicas = 4;
+    const Scene s = intruder_scene(c.bath, c.mass, c.alpha, 2000.0, c.dt, 1.0, {.replicas = 4});
     const RunResult r = run_dsmc_intruder(s);
     for (const ReplicaSeries& rep : r.replicas) {
       const std::size_t n = r.times.size();
@@ -242,8 +281,7 @@ TEST(IntruderDsmc, OutputsAreFiniteInTheHardCases) {
 }
 
 TEST(IntruderDsmc, OneAndTwoThreadsGiveTheSameBits) {
-  Scene s = intruder_scene(BathKind::power_law, 0.7, 0.3, 2000.0, 0.3, 1.0);
-  s.run.replicas = 3;
+  const Scene s = intruder_scene("power-law", 0.7, 0.3, 2000.0, 0.3, 1.0, {.replicas = 3});
   RunOptions one, two;
   one.threads = 1;
   two.threads = 2;

@@ -10,25 +10,32 @@
 #include "kernel/observe/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/scene_theory.hpp"
+#include "tests/statistical_check.hpp"
+#include "tests/test_scenes.hpp"
 
 using namespace granmc;
+using granmc::testing::scene_from_toml;
+using granmc::testing::within_ci;
 
 namespace {
 
-constexpr double alpha = 0.5;
-
 Scene long_cooling_scene() {
-  Scene s;
-  s.run.seed = 31;
-  s.run.replicas = 8;
-  s.run.t_end = 1e21;  // Haff: T(t_end) / T(0) ~ 1e-41 (issue 7: a cooling run over 40 decades)
-  s.run.dt = 0.02;     // about 0.14 mean free times, kept so by the thermal scaling
-  s.run.dt_scaling = DtScaling::thermal;
-  s.run.samples = 80;
-  s.run.sample_spacing = SampleSpacing::log;
-  s.species.push_back({"a", 1.0, 1.0, 1.0, 4000});
-  s.collision.restitution = {{{alpha, alpha}, {alpha, alpha}}};
-  return s;
+  return scene_from_toml(R"(
+    [run]
+    seed = 31
+    replicas = 8
+    t_end = 1e21  # Haff: T(t_end) / T(0) ~ 1e-41 (issue 7: a cooling run over 40 decades)
+    dt = 0.02     # about 0.14 mean free times, kept so by the thermal scaling
+    dt_scaling = "thermal"
+    samples = 80
+    sample_spacing = "log"
+
+    [[species]]
+    particles = 4000
+
+    [collision]
+    restitution = 0.5
+  )");
 }
 
 /// Per replica, the time average of a2 over the samples with log10(T(0) / T) in [lo, hi].
@@ -92,11 +99,11 @@ TEST_F(LongCooling, LateScaledStateEqualsEarlyScaledState) {
   std::printf(
       "[ measured ] a2 after 2-6 decades %.4f +- %.4f, after 35-40 decades %.4f +- %.4f, difference %.4f +- %.4f\n",
       early_a2.mean, early_a2.ci, replica_mean(late).mean, replica_mean(late).ci, d.mean, d.ci);
-  EXPECT_NEAR(d.mean, 0.0, d.ci) << "a2 late - a2 early";
+  // Bound: measured today 0.0077; bound 1.5x.
+  EXPECT_TRUE(within_ci("a2 late - a2 early", d, 0.0, 0.0115));
   const MeanCI late_a2 = replica_mean(late);
-  EXPECT_LT(late_a2.ci, 0.02);  // the comparison can see a change of the order of a2 itself
-  // And it is the HCS a2 of theory (first Sonine, with its documented model error).
-  Scene scene = long_cooling_scene();
-  const auto hcs = theory::cooling_state(scene, result_->times);
-  EXPECT_NEAR(late_a2.mean, hcs->a2, late_a2.ci + hcs->a2_model_error);
+  // And it is the HCS a2 of theory (first Sonine, with its documented model error). Bound 0.02: the comparison
+  // can see a change of the order of a2 itself (measured today 0.0041).
+  const auto hcs = theory::cooling_state(long_cooling_scene(), result_->times);
+  EXPECT_TRUE(within_ci("a2 after 35-40 decades", late_a2, hcs->a2, 0.02, hcs->a2_model_error));
 }

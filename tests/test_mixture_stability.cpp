@@ -4,27 +4,45 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
 #include "kernel/setup/run_scene.hpp"
+#include "tests/test_scenes.hpp"
 
 using namespace granmc;
+using granmc::testing::scene_from_toml;
 
 namespace {
 
 Scene hard_case(double mass_ratio, double alpha, double phi, bool heated) {
-  Scene s;
-  s.run.seed = 5;
-  s.run.replicas = 2;
-  s.run.t_end = 1.0;
-  s.run.dt = 0.005;
-  s.run.samples = 10;
-  s.species = {{"1", mass_ratio, 1.0, 1.0, 4000}, {"2", 1.0, 1.0, 1.0, 4000}};
-  s.collision.restitution = {{{alpha, alpha}, {alpha, alpha}}};
-  s.collision.packing_fraction = phi;
-  if (heated) s.thermostat.kind = ThermostatKind::gaussian;
-  return s;
+  constexpr std::string_view text = R"(
+    [run]
+    seed = 5
+    replicas = 2
+    t_end = 1.0
+    dt = 0.005
+    samples = 10
+
+    [[species]]
+    name = "1"
+    mass = ${mass_ratio}
+    particles = 4000
+
+    [[species]]
+    name = "2"
+    particles = 4000
+
+    [collision]
+    restitution = ${alpha}
+    packing_fraction = ${phi}
+
+    [thermostat]
+    kind = "${kind}"
+  )";
+  return scene_from_toml(
+      text, {{"mass_ratio", mass_ratio}, {"alpha", alpha}, {"phi", phi}, {"kind", heated ? "gaussian" : "none"}});
 }
 
 void expect_stable(const Scene& scene, const char* what) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <numbers>
+#include <string_view>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -16,8 +17,12 @@
 #include "kernel/schemes/intruder_needle.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 #include "kernel/setup/run_scene.hpp"
+#include "tests/statistical_check.hpp"
+#include "tests/test_scenes.hpp"
 
 using namespace granmc;
+using granmc::testing::scene_from_toml;
+using granmc::testing::within_ci;
 
 namespace {
 
@@ -71,23 +76,38 @@ std::vector<double> per_replica(const RunResult& r, F value) {
   return out;
 }
 
-Scene needle_scene(double mass, double alpha, double t_end, int replicas) {
-  Scene s;
-  s.run.method = Method::gillespie;
-  s.run.seed = 20070611;
-  s.run.replicas = replicas;
-  s.run.t_end = t_end;
-  s.run.samples = static_cast<int>(t_end);
-  IntruderConfig in;
-  in.dimension = 2;
-  in.mass = mass;
-  in.restitution = alpha;
-  in.bath_a = 0.8;
-  in.bath_density = 1.5;
-  in.length = 1.3;
-  s.intruder = in;
-  s.initial_temperature = 0.5 / in.bath_a;  // T_B
-  return s;
+/// The needle scene; `inertia` = 0 is the uniform rod's M L^2 / 12, `storage` is run.storage.
+Scene needle_scene(double mass, double alpha, double t_end, int replicas, double inertia = 0.0,
+                   const char* storage = "double") {
+  constexpr std::string_view text = R"(
+    [run]
+    method = "gillespie"
+    seed = 20070611
+    replicas = ${replicas}
+    t_end = ${t_end}
+    samples = ${samples}
+    storage = "${storage}"
+
+    [intruder]
+    dimension = 2
+    mass = ${mass}
+    restitution = ${alpha}
+    bath_a = 0.8
+    bath_density = 1.5
+    length = 1.3
+    inertia = ${inertia}
+
+    [initial]
+    temperature = ${bath_temperature}  # T_B = 1 / (2 bath_a)
+  )";
+  return scene_from_toml(text, {{"replicas", replicas},
+                                {"t_end", t_end},
+                                {"samples", static_cast<int>(t_end)},
+                                {"storage", storage},
+                                {"mass", mass},
+                                {"alpha", alpha},
+                                {"inertia", inertia},
+                                {"bath_temperature", 0.5 / 0.8}});
 }
 
 RunResult run_needle(const Scene& s, int threads = 0) {
@@ -322,25 +342,29 @@ TEST(Needle, ElasticNeedleIsInEquilibriumWithTheBath) {
   // alpha = 1: v1 and omega Maxwellian at T_B, independent (T_tr = T_rot = T_B, R = 1, 002 eq. 34), for a
   // uniform rod and for a needle with another inertia.
   for (double inertia : {0.0, 0.05}) {
-    Scene s = needle_scene(1.0, 1.0, 10000.0, 16);
-    s.intruder->inertia = inertia;
+    const Scene s = needle_scene(1.0, 1.0, 10000.0, 16, inertia);
     const RunResult run = run_needle(s);
     const NeedleStatistics st = needle_statistics(s, run);
     std::printf(
         "[ measured ] alpha = 1, I = %.4f: T_tr/T_B = %.4f +- %.4f, T_rot/T_B = %.4f +- %.4f, R = %.4f +- %.4f\n",
         needle_inertia(*s.intruder), st.tr_ci.mean, st.tr_ci.ci, st.rot_ci.mean, st.rot_ci.ci, st.r_ci.mean,
         st.r_ci.ci);
-    EXPECT_NEAR(st.tr_ci.mean, 1.0, st.tr_ci.ci);
-    EXPECT_NEAR(st.rot_ci.mean, 1.0, st.rot_ci.ci);
-    EXPECT_NEAR(st.r_ci.mean, 1.0, st.r_ci.ci);
-    EXPECT_LT(st.tr_ci.ci, 0.03);
+    // Bounds: T_tr/T_B resolved to 3 % (measured today 0.013 and 0.018); T_rot/T_B and R measured today up to
+    // 0.017 and 0.018 over the two inertias, bounds 1.5x.
+    EXPECT_TRUE(within_ci("T_tr/T_B", st.tr_ci, 1.0, 0.03)) << "I = " << inertia;
+    EXPECT_TRUE(within_ci("T_rot/T_B", st.rot_ci, 1.0, 0.025)) << "I = " << inertia;
+    EXPECT_TRUE(within_ci("R", st.r_ci, 1.0, 0.0265)) << "I = " << inertia;
     // Maxwellian: |v1|^2 exponential, <|v1|^4> = 2 <|v1|^2>^2; omega Gaussian, <omega^4> = 3 <omega^2>^2.
     const double tb = 0.5 / s.intruder->bath_a, v2 = 2.0 * tb / s.intruder->mass, w2 = tb / needle_inertia(*s.intruder);
     const MeanCI v4 =
         replica_mean(per_replica(run, [&](double x, double y, double) { return std::pow((x * x + y * y) / v2, 2); }));
     const MeanCI w4 = replica_mean(per_replica(run, [&](double, double, double w) { return std::pow(w * w / w2, 2); }));
-    EXPECT_NEAR(v4.mean, 2.0, v4.ci);
-    EXPECT_NEAR(w4.mean, 3.0, w4.ci);
+    // Bounds: the standard deviation of x^2 is sqrt(20) times that of x for x = |v1|^2 / <|v1|^2> exponential, and
+    // sqrt(48) times for x = omega^2 / <omega^2> with omega Gaussian; so the CIs are about these times those of
+    // T_tr/T_B and T_rot/T_B (measured today 0.91 to 1.10 times); bounds 1.5x.
+    EXPECT_TRUE(within_ci("<|v1|^4> / <|v1|^2>^2", v4, 2.0, 1.5 * std::sqrt(20.0) * st.tr_ci.ci)) << "I = " << inertia;
+    EXPECT_TRUE(within_ci("<omega^4> / <omega^2>^2", w4, 3.0, 1.5 * std::sqrt(48.0) * st.rot_ci.ci))
+        << "I = " << inertia;
     std::uint64_t newton = 0, bisection = 0;
     double events = 0.0;
     for (const ReplicaSeries& r : run.replicas) {
@@ -385,7 +409,7 @@ TEST(Needle, InelasticNeedleIsColderInRotationThanInTranslation) {
 TEST(Needle, HardCasesStayFinite) {
   // alpha = 0 with mass ratios 1e-3 and 1e3: finite, positive temperatures; same bits on 1 and 2 threads.
   for (double mass : {1e-3, 1e3}) {
-    Scene s = needle_scene(mass, 0.0, mass < 1.0 ? 200.0 : 2000.0, 2);
+    const Scene s = needle_scene(mass, 0.0, mass < 1.0 ? 200.0 : 2000.0, 2);
     const RunResult one = run_needle(s, 1), two = run_needle(s, 2);
     for (std::size_t r = 0; r < one.replicas.size(); ++r) {
       const ReplicaSeries& a = one.replicas[r];
@@ -408,7 +432,7 @@ TEST(Needle, HardCasesStayFinite) {
 TEST(Needle, SceneRunReportsTheStationaryAverages) {
   // Through the one dispatch site and the run report, as `granmc run` does: intruder.temperature_ratio
   // is T_tr/T_B, and R and T_rot/T_B are the averages computed here from the recorded velocities.
-  Scene s = needle_scene(0.5, 0.3, 2000.0, 4);
+  const Scene s = needle_scene(0.5, 0.3, 2000.0, 4);
   ASSERT_TRUE(plan_refusal(s).empty()) << plan_refusal(s);
   const RunResult run = run_scene(s, {});
   const RunReport report = make_run_report(s, run, 0.0);
@@ -430,8 +454,7 @@ TEST(Needle, SceneRunReportsTheStationaryAverages) {
 
 TEST(Needle, FloatStorageIsRefusedForAnIntruderScene) {
   // run.storage is a gas-store option; an intruder scene has no store, so the key must not pass silently.
-  Scene s = needle_scene(0.5, 0.3, 10.0, 1);
-  s.run.storage = Storage::single_precision;
+  const Scene s = needle_scene(0.5, 0.3, 10.0, 1, 0.0, "float");
   EXPECT_NE(plan_refusal(s).find("run.storage = \"float\" for an intruder scene"), std::string::npos)
       << plan_refusal(s);
 }

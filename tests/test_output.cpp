@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -19,6 +20,7 @@
 #include "io/output_schema.hpp"
 #include "io/run_report.hpp"
 #include "io/summary_json.hpp"
+#include "tests/test_scenes.hpp"
 
 namespace granmc {
 namespace {
@@ -72,19 +74,33 @@ ReplicaSeries replica(SpeciesSeries sp, std::vector<double> collisions, std::uin
   return r;
 }
 
-/// One species, monodisperse hard-sphere cooling: 2 replicas, 3 sample times, the theory applies.
+/// The scenes below: monodisperse hard-sphere cooling, 2 replicas, 3 sample times; ${species} is one or two
+/// [[species]] tables.
+constexpr std::string_view scene_text = R"(
+  [run]
+  method = "dsmc"
+  replicas = 2
+  t_end = 1.0
+  dt = 0.01
+  samples = 2
+
+  ${species}
+
+  [collision]
+  restitution = 0.9
+)";
+
+/// The seed is set after parsing: it needs all 64 bits, and a scene file's seed is a TOML integer, at most
+/// 2^63 - 1 (docs/scenes.md). The files written must carry it whole.
+constexpr std::uint64_t seed_of_64_bits = 18446744073709551557ULL;
+
+/// One species: the theory applies.
 Scene one_species_scene() {
-  Scene s;
-  s.run.method = Method::dsmc;
-  s.run.seed = 18446744073709551557ULL;  // needs all 64 bits
-  s.run.replicas = 2;
-  s.run.t_end = 1.0;
-  s.run.dt = 0.01;
-  s.run.samples = 2;
-  s.species.push_back({"a", 1.0, 1.0, 1.0, 1000});
-  s.collision.restitution = {{{0.9, 0.9}, {0.9, 0.9}}};
-  s.source_path = "drivers/scenes/test.toml";
-  s.source_text = "[run]\nt_end = 1.0\ndt = 0.01\nsamples = 2\nreplicas = 2\n";
+  Scene s = testing::scene_from_toml(scene_text, {{"species", R"(
+    [[species]]
+    particles = 1000
+  )"}});
+  s.run.seed = seed_of_64_bits;
   return s;
 }
 
@@ -100,8 +116,17 @@ RunResult one_species_result() {
 
 /// Two species: T_1/T_2 over samples k >= 1 is (2 + 3)/2 = 2.5 in replica 0 and (1.5 + 2.5)/2 = 2 in replica 1.
 Scene two_species_scene() {
-  Scene s = one_species_scene();
-  s.species.push_back({"b", 2.0, 1.0, 1.0, 1000});
+  Scene s = testing::scene_from_toml(scene_text, {{"species", R"(
+    [[species]]
+    name = "a"
+    particles = 1000
+
+    [[species]]
+    name = "b"
+    mass = 2.0
+    particles = 1000
+  )"}});
+  s.run.seed = seed_of_64_bits;
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
@@ -14,23 +15,40 @@
 #include "kernel/schemes/dsmc.hpp"
 #include "kernel/schemes/rank_wave_backend.hpp"
 #include "kernel/setup/run_scene.hpp"
+#include "tests/test_scenes.hpp"
 
 using namespace granmc;
+using granmc::testing::scene_from_toml;
 
 namespace {
 
-Scene cooling(ThermostatKind thermostat) {
-  Scene s;
-  s.run.seed = 31;
-  s.run.replicas = 2;
-  s.run.t_end = 10.0;  // T falls about 25-fold without the thermostat: several rescalings
-  s.run.dt = 0.01;
-  s.run.samples = 20;
-  s.species.push_back({"a", 1.0, 1.0, 1.0, 10000});
-  s.collision.restitution = {{{0.7, 0.7}, {0.7, 0.7}}};
-  s.thermostat.kind = thermostat;
-  s.histogram = {32, 4.0};
-  return s;
+/// The scenes of these tests: ${thermostat} is the [thermostat] table, ${storage} run.storage, and
+/// ${particles} the number of particles.
+constexpr std::string_view cooling_text = R"(
+  [run]
+  seed = 31
+  replicas = 2
+  t_end = 10.0  # T falls about 25-fold without the thermostat: several rescalings
+  dt = 0.01
+  samples = 20
+  storage = "${storage}"
+
+  [[species]]
+  particles = ${particles}
+
+  [collision]
+  restitution = 0.7
+
+  [thermostat]
+  ${thermostat}
+
+  [output]
+  histogram = { shells = 32, radius = 4.0 }
+)";
+
+/// A cooling gas of 10^4 particles with `thermostat` (the lines of its [thermostat] table).
+Scene cooling(std::string_view thermostat) {
+  return scene_from_toml(cooling_text, {{"storage", "double"}, {"particles", 10000}, {"thermostat", thermostat}});
 }
 
 /// `one` receives the one-process run.
@@ -63,30 +81,38 @@ void expect_same_chain(const Scene& s, RunResult& one) {
 
 TEST(SpreadSystem, CoolingMakesTheCollisionsOfTheOneProcessStage) {
   RunResult one;
-  expect_same_chain(cooling(ThermostatKind::none), one);
+  const Scene s = cooling(R"(kind = "none")");
+  expect_same_chain(s, one);
   EXPECT_LT(one.replicas[0].temperature.back(), 0.1 * one.replicas[0].temperature.front()) << "the gas cooled";
   EXPECT_GT(one.replicas[0].rescales, 3u);
 }
 
 TEST(SpreadSystem, GaussianThermostatMakesTheCollisionsOfTheOneProcessStage) {
   RunResult one;
-  expect_same_chain(cooling(ThermostatKind::gaussian), one);
+  const Scene s = cooling(R"(kind = "gaussian")");
+  expect_same_chain(s, one);
 }
 
 TEST(SpreadSystem, WhiteNoiseMakesTheCollisionsOfTheOneProcessStage) {  // the kicks: the same normals
-  Scene s = cooling(ThermostatKind::white_noise);
-  s.thermostat.beta = 2.0;  // heats the gas: T rises towards its steady value
+  const Scene s = cooling(R"(
+    kind = "white-noise"
+    beta = 2.0  # heats the gas: T rises towards its steady value
+  )");
   RunResult one;
   expect_same_chain(s, one);
   EXPECT_GT(one.replicas[0].temperature.back(), 1.5 * one.replicas[0].temperature.front()) << "the noise heated";
 }
 
 TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
-  Scene s = cooling(ThermostatKind::none);
-  s.run.storage = Storage::single_precision;
+  const Scene s =
+      scene_from_toml(cooling_text, {{"storage", "float"}, {"particles", 10000}, {"thermostat", R"(kind = "none")"}});
   EXPECT_NE(plan_refusal(s, Spread::particles).find("float"), std::string::npos);
-  Scene two = cooling(ThermostatKind::none);
-  two.species.push_back({"b", 1.0, 1.0, 1.0, 10000});
+  const Scene two = scene_from_toml(std::string(cooling_text) + R"(
+    [[species]]
+    name = "b"
+    particles = 10000
+  )",
+                                    {{"storage", "double"}, {"particles", 10000}, {"thermostat", R"(kind = "none")"}});
   EXPECT_NE(plan_refusal(two, Spread::particles).find("two species"), std::string::npos);
   const SingleRank single;
   RunOptions spread;
@@ -97,8 +123,8 @@ TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
 TEST(SpreadSystem, AStepNeedsAHandfulOfWaves) {
   // The cost model of docs/scaling.md: two exchanges per wave. A particle is in about 2C/N of a step's C
   // candidates, so chains of candidates that share particles stay short.
-  Scene s = cooling(ThermostatKind::none);
-  s.species[0].particles = 100000;
+  const Scene s =
+      scene_from_toml(cooling_text, {{"storage", "double"}, {"particles", 100000}, {"thermostat", R"(kind = "none")"}});
   const SingleRank single;
   BasicDsmc<RankWaveBackend, double, HardSphere> sim(s, 0, single);
   const double t = 0.5;

@@ -190,7 +190,8 @@ TEST_F(Sweep, KilledSweepLeavesNoPartialFileAndItsRerunSkipsTheFinishedScene) {
   EXPECT_EQ(files("out"),
             (std::set<std::string>{"index.json", "keep.tmp-1", "seed1.h5", "seed1.json", "seed2_particles100000.h5",
                                    "seed2_particles100000.json", "seed3.h5", "seed3.json"}));
-  for (const auto& s : json("out/index.json")["scenes"]) EXPECT_EQ(s["status"], "done") << s;
+  const nlohmann::json index = json("out/index.json");  // alive through the loop
+  for (const auto& s : index["scenes"]) EXPECT_EQ(s["status"], "done") << s;
 }
 
 TEST_F(Sweep, RerunSkipsWhatIsDoneAndRunsWhatChanged) {
