@@ -9,8 +9,8 @@
 #include "drivers/cli.hpp"
 #include "drivers/progress.hpp"
 #include "io/hdf5_output.hpp"
-#include "io/run_report.hpp"
 #include "io/summary_json.hpp"
+#include "kernel/analysis/run_report.hpp"
 #include "kernel/schemes/run_options.hpp"
 #include "kernel/setup/run_scene.hpp"
 #ifdef GRANMC_HAVE_MPI

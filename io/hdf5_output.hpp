@@ -3,7 +3,7 @@
 // laid out as docs/output-format.md describes (generated from the same declarations).
 #include <string>
 
-#include "io/run_report.hpp"
+#include "kernel/analysis/run_report.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/observe/gas_series.hpp"
 

@@ -23,7 +23,7 @@
 #include <variant>
 #include <vector>
 
-#include "io/run_report.hpp"
+#include "kernel/analysis/run_report.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/observe/gas_series.hpp"
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/run_report.hpp"
+#include "kernel/analysis/run_report.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/observe/gas_series.hpp"
 

@@ -26,16 +26,21 @@ nlohmann::json cooling_state_json(const theory::CoolingStatePrediction& p) {
           {"haff_temperature", p.temperature}};
 }
 
-nlohmann::json scene_theory_json(const Scene& scene) {
-  nlohmann::json j;
-  j["scene"] = scene.source_path;
-  nlohmann::json applies = nlohmann::json::array();
-  const std::vector<double> times = sample_times(scene.run);
+namespace {
+
+/// Haff's law and the Sonine a2 of the monodisperse hard-sphere cooling state.
+void add_cooling_state(const Scene& scene, const std::vector<double>& times, nlohmann::json& j,
+                       nlohmann::json& applies) {
   if (const auto hcs = theory::cooling_state(scene, times)) {
     applies.push_back("homogeneous cooling state, monodisperse hard spheres: Haff's law, Sonine a2 (docs/physics.md)");
     j["times"] = times;
     j["cooling_state"] = cooling_state_json(*hcs);
   }
+}
+
+/// The Sonine a2 and a3 of the scaled cooling state (HCS, or HSS with the Gaussian thermostat).
+void add_scaled_state(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
+                      nlohmann::json& applies) {
   if (const auto s = theory::scaled_state(scene)) {
     applies.push_back("scaled homogeneous cooling state (HCS, or HSS with the Gaussian thermostat): Sonine a2, a3");
     j["scaled_state"] = {{"a2", s->a2},
@@ -43,24 +48,37 @@ nlohmann::json scene_theory_json(const Scene& scene) {
                          {"a2_second_sonine", s->a2_second_sonine},
                          {"a3_second_sonine", s->a3_second_sonine}};
   }
+}
+
+/// The temperature ratio and a2_i of a binary mixture.
+void add_mixture(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j, nlohmann::json& applies) {
   if (const auto m = theory::mixture_state(scene)) {
     applies.push_back("binary mixture, HCS or HSS: temperature ratio and a2_i (docs/derivations/mixture-hcs.md)");
     j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell},
                     {"temperature_ratio_sonine", m->temperature_ratio_sonine},
                     {"a2_sonine", {m->a2_sonine[0], m->a2_sonine[1]}}};
   }
+}
+
+/// The intruder's bath and its exact T/T_B where known (002 eq. 22).
+void add_intruder(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
+                  nlohmann::json& applies) {
   if (scene.intruder) {
     const IntruderConfig& in = *scene.intruder;
     // 002 eq. (22), the Gaussian-bath result, also as the reference line of 002 Fig. 4 for other baths.
-    j["intruder"] = {
-        {"bath", in.bath == BathKind::gaussian ? "gaussian" : "power-law"},
-        {"bath_temperature", theory::bath_temperature(in)},
-        {"temperature_ratio_gaussian_bath", (1.0 + in.restitution) / (2.0 + (1.0 - in.restitution) / in.mass)}};
+    j["intruder"] = {{"bath", in.bath == BathKind::gaussian ? "gaussian" : "power-law"},
+                     {"bath_temperature", theory::bath_temperature(in)},
+                     {"temperature_ratio_gaussian_bath", theory::gaussian_bath_temperature_ratio(in)}};
     if (const auto exact = theory::intruder_temperature_ratio(*scene.intruder)) {
       applies.push_back("1D intruder: exact stationary T/T_B (002 eq. 22, or alpha for the power law with M = alpha)");
       j["intruder"]["temperature_ratio_exact"] = *exact;
     }
   }
+}
+
+/// The kernel form of 001: Maxwell's exact temperature relaxation, the white-noise steady state and tails;
+/// the first-Sonine white-noise a2 of hard spheres in 000's form.
+void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohmann::json& j, nlohmann::json& applies) {
   if (scene.species.size() == 1 && scene.collision.rate > 0.0) {  // the kernel form of 001
     const double alpha = scene.collision.restitution[0][0], rate = scene.collision.rate;
     const double beta = scene.thermostat.kind == ThermostatKind::white_noise ? scene.thermostat.beta : 0.0;
@@ -99,6 +117,11 @@ nlohmann::json scene_theory_json(const Scene& scene) {
     applies.push_back("white-noise heated steady state, monodisperse hard spheres: first-Sonine a2");
     j["white_noise"] = {{"a2", theory::white_noise_a2(scene.collision.restitution[0][0])}};
   }
+}
+
+/// The Enskog pair correlation at contact chi_ij (000 eq. 3).
+void add_enskog_chi(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
+                    nlohmann::json& applies) {
   if (scene.collision.packing_fraction > 0.0 && !scene.species.empty()) {
     const double n = total_density(scene);
     std::vector<double> x, sigma;
@@ -116,6 +139,11 @@ nlohmann::json scene_theory_json(const Scene& scene) {
     applies.push_back("Enskog pair correlation at contact chi_ij, Carnahan-Starling (000 eq. 3)");
     j["carnahan_starling_chi"] = chi;
   }
+}
+
+/// The first-Sonine Navier-Stokes shear viscosity of a uniform shear flow of hard spheres.
+void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
+                   nlohmann::json& applies) {
   if (scene.shear_rate != 0.0 && scene.collision.kernel == CollisionKernel::hard_sphere && !scene.species.empty()) {
     // The reference state whose Navier-Stokes viscosity the run measures: the HSS of 000 (Gaussian thermostat
     // compensating the cooling), or the HCS with 003's relaxation term (theory/viscosity.hpp).
@@ -153,6 +181,18 @@ nlohmann::json scene_theory_json(const Scene& scene) {
         "mixtures docs/derivations/viscosity.md)");
     j["viscosity"] = v;
   }
+}
+
+}  // namespace
+
+nlohmann::json scene_theory_json(const Scene& scene) {
+  nlohmann::json j;
+  j["scene"] = scene.source_path;
+  nlohmann::json applies = nlohmann::json::array();
+  const std::vector<double> times = sample_times(scene.run);
+  for (auto add :
+       {add_cooling_state, add_scaled_state, add_mixture, add_intruder, add_kernel_form, add_enskog_chi, add_viscosity})
+    add(scene, times, j, applies);
   j["applies"] = applies;
   return j;
 }

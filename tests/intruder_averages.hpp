@@ -3,8 +3,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "kernel/analysis/replica_statistics.hpp"
 #include "kernel/observe/gas_series.hpp"
-#include "kernel/observe/replica_statistics.hpp"
 
 namespace granmc::testing {
 

@@ -1,7 +1,7 @@
 #pragma once
 // A statistical check against theory that has teeth both ways. A replica mean is compared with the expected
 // value using its measured confidence half-width ci (001 eq. 31: lambda_p = 3.2 times the replica standard
-// error, kernel/observe/replica_statistics.hpp) as the tolerance. Alone, that check gets easier to pass as the
+// error, kernel/analysis/replica_statistics.hpp) as the tolerance. Alone, that check gets easier to pass as the
 // variance grows: a change that makes the estimate noisier (or that corrupts the CI itself) would pass it more
 // easily. So the check also bounds the CI: ci <= ci_bound.
 //
@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/analysis/replica_statistics.hpp"
 
 namespace granmc::testing {
 

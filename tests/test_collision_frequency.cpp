@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "kernel/analysis/replica_statistics.hpp"
 #include "kernel/collide/enskog_chi.hpp"
-#include "kernel/observe/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "tests/statistical_check.hpp"
 #include "tests/test_scenes.hpp"

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/analysis/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/scene_theory.hpp"
 #include "tests/statistical_check.hpp"

@@ -17,9 +17,9 @@
 
 #include <gtest/gtest.h>
 
+#include "kernel/analysis/replica_statistics.hpp"
 #include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/observe/moments.hpp"
-#include "kernel/observe/replica_statistics.hpp"
 #include "kernel/schemes/event_white_noise.hpp"
 #include "kernel/schemes/initial_state.hpp"
 #include "kernel/setup/run_scene.hpp"

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "kernel/analysis/replica_statistics.hpp"
 #include "kernel/collide/bath_power_law.hpp"
-#include "kernel/observe/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/intruder.hpp"
 #include "tests/intruder_averages.hpp"

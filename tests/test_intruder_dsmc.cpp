@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include "kernel/analysis/replica_statistics.hpp"
 #include "kernel/collide/bath_gaussian.hpp"
 #include "kernel/collide/bath_power_law.hpp"
-#include "kernel/observe/replica_statistics.hpp"
 #include "kernel/schemes/intruder_dsmc_1d.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/intruder.hpp"

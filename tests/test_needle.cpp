@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/run_report.hpp"
+#include "kernel/analysis/replica_statistics.hpp"
+#include "kernel/analysis/run_report.hpp"
 #include "kernel/collide/needle_flux.hpp"
-#include "kernel/observe/replica_statistics.hpp"
 #include "kernel/schemes/intruder_needle.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 #include "kernel/setup/run_scene.hpp"

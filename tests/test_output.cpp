@@ -18,8 +18,8 @@
 #include "granmc/version.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/output_schema.hpp"
-#include "io/run_report.hpp"
 #include "io/summary_json.hpp"
+#include "kernel/analysis/run_report.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace granmc {

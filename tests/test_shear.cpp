@@ -12,13 +12,13 @@
 
 #include <gtest/gtest.h>
 
-#include "io/run_report.hpp"
+#include "kernel/analysis/replica_statistics.hpp"
+#include "kernel/analysis/run_report.hpp"
 #include "kernel/collide/enskog_chi.hpp"
 #include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/effects/bgk_relaxation.hpp"
 #include "kernel/effects/lagrangian_shear.hpp"
-#include "kernel/observe/replica_statistics.hpp"
 #include "kernel/schemes/dsmc.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/sonine.hpp"

@@ -16,7 +16,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/analysis/replica_statistics.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/white_noise.hpp"
 #include "tests/statistical_check.hpp"

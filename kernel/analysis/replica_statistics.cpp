@@ -1,4 +1,4 @@
-#include "kernel/observe/replica_statistics.hpp"
+#include "kernel/analysis/replica_statistics.hpp"
 
 #include <cmath>
 

@@ -1,0 +1,126 @@
+#include "kernel/analysis/run_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace granmc {
+namespace {
+
+void require_length(std::size_t got, std::size_t want, const char* what, std::size_t replica) {
+  if (got != want)
+    throw std::invalid_argument("run result: replica " + std::to_string(replica) + " has " + std::to_string(got) +
+                                " values of " + what + ", expected " + std::to_string(want));
+}
+
+void check_shapes(const RunResult& result) {
+  const std::size_t samples = result.times.size();
+  const std::size_t species = result.species_names.size();
+  if (result.replicas.empty()) throw std::invalid_argument("run result: no replicas");
+  for (std::size_t r = 0; r < result.replicas.size(); ++r) {
+    const ReplicaSeries& s = result.replicas[r];
+    require_length(s.temperature.size(), samples, "temperature", r);
+    require_length(s.log_temperature.size(), samples, "log_temperature", r);
+    if (s.intruder) {
+      require_length(s.intruder->velocity.size(), samples, "intruder velocity", r);
+      if (!s.intruder->velocity_y.empty() || !s.intruder->angular_velocity.empty()) {  // the needle
+        require_length(s.intruder->velocity_y.size(), samples, "needle velocity_y", r);
+        require_length(s.intruder->angular_velocity.size(), samples, "needle angular_velocity", r);
+      }
+    } else {
+      require_length(s.momentum.size(), samples, "momentum", r);
+      require_length(s.momentum_relative.size(), samples, "momentum_relative", r);
+      if (!s.pressure_kinetic.empty() || !result.replicas.front().pressure_kinetic.empty()) {  // shear
+        require_length(s.pressure_kinetic.size(), samples, "pressure_kinetic", r);
+        require_length(s.pressure_collisional.size(), samples, "pressure_collisional", r);
+        require_length(s.reduced_shear_rate.size(), samples, "reduced_shear_rate", r);
+      }
+    }
+    require_length(s.collisions.size(), samples, "collisions", r);
+    require_length(s.species.size(), species, "species", r);
+    for (const SpeciesSeries& sp : s.species) {
+      require_length(sp.temperature.size(), samples, "species temperature", r);
+      require_length(sp.log_temperature.size(), samples, "species log_temperature", r);
+      require_length(sp.a2.size(), samples, "species a2", r);
+      require_length(sp.a3.size(), samples, "species a3", r);
+    }
+  }
+}
+
+/// Phi_i(v*) = counts / (N_i samples shell volume) for every replica: the scaled speed distribution,
+/// normalised so that its integral over d^3 v* is the fraction of particles inside the radius.
+std::vector<std::vector<double>> speed_distributions(const RunResult& result, std::size_t i,
+                                                     const std::vector<double>& edges, double particles) {
+  std::vector<std::vector<double>> phi;
+  for (const ReplicaSeries& s : result.replicas) {
+    const std::vector<double>& counts = s.species[i].speed_counts;
+    std::vector<double> p(counts.size());
+    for (std::size_t k = 0; k < counts.size(); ++k) {
+      const double volume = 4.0 * std::numbers::pi / 3.0 * (std::pow(edges[k + 1], 3) - std::pow(edges[k], 3));
+      p[k] = counts[k] / (particles * static_cast<double>(s.histogram_samples) * volume);
+    }
+    phi.push_back(std::move(p));
+  }
+  return phi;
+}
+
+}  // namespace
+
+RunReport make_run_report(const Scene& scene, const RunResult& result, double wall_seconds) {
+  check_shapes(result);
+  RunReport report;
+  report.method = method_name(scene.run.method);
+  report.wall_seconds = wall_seconds;
+  report.temperature = per_time(
+      result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; });
+  report.log_temperature = per_time(
+      result, [](const ReplicaSeries& s) -> const auto& { return s.log_temperature; });
+  if (!result.replicas.front().intruder)
+    report.momentum_relative = per_time(
+        result, [](const ReplicaSeries& s) -> const auto& { return s.momentum_relative; });
+  for (std::size_t i = 0; i < result.species_names.size(); ++i) {
+    SpeciesReport sp;
+    sp.name = result.species_names[i];
+    sp.temperature = per_time(
+        result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].temperature; });
+    sp.a2 = per_time(
+        result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a2; });
+    sp.a2_last_half =
+        last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a2[k]; });
+    sp.a3 = per_time(
+        result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a3; });
+    sp.a3_last_half =
+        last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a3[k]; });
+    const std::size_t shells = result.replicas.front().species[i].speed_counts.size();
+    if (shells > 0 && i < scene.species.size()) {
+      if (report.speed_shell_edges.empty())
+        for (std::size_t k = 0; k <= shells; ++k)
+          report.speed_shell_edges.push_back(scene.histogram.radius * static_cast<double>(k) / shells);
+      const auto phi =
+          speed_distributions(result, i, report.speed_shell_edges, static_cast<double>(scene.species[i].particles));
+      sp.speed_distribution = per_index(
+          phi.size(), shells, [&](std::size_t r) -> const auto& { return phi[r]; });
+    }
+    report.species.push_back(std::move(sp));
+  }
+  for (const ReplicaSeries& s : result.replicas) {
+    if (!s.collisions.empty()) report.collisions += static_cast<std::uint64_t>(std::llround(s.collisions.back()));
+    report.candidates += s.candidates;
+    report.majorant_updates += s.majorant_updates;
+    report.majorant_violations += s.majorant_violations;
+    report.rescales += s.rescales;
+    if (s.energy_residual) report.energy_residual = std::max(report.energy_residual.value_or(0.0), *s.energy_residual);
+  }
+  // T_1/T_2 as exp(ln T_1 - ln T_2), finite when both temperatures underflow in a long cooling run.
+  if (result.species_names.size() == 2 && !result.times.empty())
+    report.temperature_ratio = last_half_average(result, [](const ReplicaSeries& s, std::size_t k) {
+      return std::exp(s.species[0].log_temperature[k] - s.species[1].log_temperature[k]);
+    });
+  report.theory = theory::cooling_state(scene, result.times);
+  if (scene.intruder && result.replicas.front().intruder) report.intruder = intruder_report(scene, result);
+  if (!result.replicas.front().pressure_kinetic.empty()) report.viscosity = viscosity_report(scene, result);
+  return report;
+}
+
+}  // namespace granmc
