@@ -155,18 +155,17 @@ thread-test: build
 	OMP_NUM_THREADS=1 ctest --test-dir $(BUILD) --output-on-failure
 	OMP_NUM_THREADS=4 ctest --test-dir $(BUILD) --output-on-failure
 
-# The fast tests (labels unit and cli) built with AddressSanitizer and UndefinedBehaviorSanitizer in
-# $(SANITIZE_BUILD), at -O1 (about a third less compile time than -O2): any finding fails the test. test_spread
-# is left out (2 minutes under the sanitizers); test_cli runs the rank-wave backend through granmc.
+# The fast tests (labels unit and cli, not heavy: the target fast_tests, tests/CMakeLists.txt) built with
+# AddressSanitizer and UndefinedBehaviorSanitizer in $(SANITIZE_BUILD), at -O1 (about a third less compile time
+# than -O2): any finding fails the test. test_spread is heavy (2 minutes under the sanitizers); test_cli runs
+# the rank-wave backend through granmc.
 SANITIZE_BUILD ?= build-sanitize
-SANITIZE_TESTS = test_scene_file test_output test_core test_threads test_numerics test_viscosity_theory \
-                 test_sonine_sampler test_run_plan test_helpers test_cli test_sweep test_output_format
 sanitize-test: setup
 	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DGRANMC_WERROR=ON \
 	  -DGRANMC_BENCH=OFF -DGRANMC_SANITIZE=address,undefined
-	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target granmc $(SANITIZE_TESTS)
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target granmc fast_tests
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -L 'unit|cli' -E '^test_spread$$'
+	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -L 'unit|cli' -LE heavy
 
 # The build above is for this machine's widest registers (AVX-512 here). The SIMD code has other branches,
 # for narrower registers: the tests that hold them to the scalar code (numerics, the store, the event

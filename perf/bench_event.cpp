@@ -1,5 +1,5 @@
-// Throughput of the time-step-free white-noise event scheme (001 sec. 4, schemes/event_white_noise.hpp):
-// one replica of EventWhiteNoise<MaxwellKernel> (001 Example 7) and EventWhiteNoise<IsotropicHardSphereKernel>
+// Throughput of the time-step-free white-noise event scheme (001 sec. 4, schemes/event_scheme.hpp):
+// one replica of EventScheme<MaxwellPseudomolecules> (001 Example 7) and EventScheme<HardSphere>
 // (001 Example 8) at N = 10^5 and 10^7.
 //
 // Gas: the physics of drivers/scenes/001_tails/example7.toml and example8.toml, rate = 4/pi, alpha = 0.1,
@@ -44,9 +44,11 @@
 
 #include <benchmark/benchmark.h>
 
-#include "kernel/collide/isotropic_kernels.hpp"
+#include "kernel/collide/hard_sphere.hpp"
+#include "kernel/collide/maxwell_pseudomolecules.hpp"
+#include "kernel/collide/variable_hard_spheres.hpp"
 #include "kernel/core/scene.hpp"
-#include "kernel/schemes/event_white_noise.hpp"
+#include "kernel/schemes/event_scheme.hpp"
 #include "perf/bench_common.hpp"
 #include "perf/gather_scatter_limit.hpp"
 
@@ -97,7 +99,7 @@ struct EventGas {
   /// pi_hat of 001 eq. (25) now, per unit time: 2 pi rate (n - 1) U_max^lambda (u = 1: T(0) = 1).
   double candidate_rate() const {
     const double base = 2.0 * std::numbers::pi * kRate * static_cast<double>(particles - 1);
-    return Kernel::constant_rate ? base : base * std::pow(sim.majorant(), Kernel{}.lambda());
+    return Kernel::constant_rate ? base : base * std::pow(sim.majorant(), Kernel{}.lambda);
   }
   /// advance_to the time when about `candidates` candidates are expected (at least one ulp ahead).
   void advance_by(double candidates) {
@@ -106,7 +108,7 @@ struct EventGas {
   }
 
   std::int64_t particles;
-  EventWhiteNoise<Kernel> sim;
+  EventScheme<Kernel> sim;
 };
 
 // One gas alive at a time (10^7 particles are 320 MB), kept across Google Benchmark's calls of the same
@@ -187,14 +189,14 @@ int main(int argc, char** argv) {
 
   // Each kernel's runs next to each other at one size, so that each gas is built once.
   for (const std::int64_t n : kSizes) {
-    benchmark::RegisterBenchmark("event_maxwell", event_run<MaxwellKernel>)->Arg(n)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("event_sync_maxwell", event_sync<MaxwellKernel>)
+    benchmark::RegisterBenchmark("event_maxwell", event_run<MaxwellPseudomolecules>)
         ->Arg(n)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("event_hard_sphere", event_run<IsotropicHardSphereKernel>)
+    benchmark::RegisterBenchmark("event_sync_maxwell", event_sync<MaxwellPseudomolecules>)
         ->Arg(n)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("event_sync_hard_sphere", event_sync<IsotropicHardSphereKernel>)
+    benchmark::RegisterBenchmark("event_hard_sphere", event_run<HardSphere>)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("event_sync_hard_sphere", event_sync<HardSphere>)
         ->Arg(n)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("limit_pairs", perf::limit_pairs<1'000'000>)->Arg(n)->Unit(benchmark::kMillisecond);

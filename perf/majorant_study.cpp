@@ -4,7 +4,7 @@
 //
 //  - the paper's: candidates at pi_hat = 2 pi rate (n - 1) U_max (001 eq. 25), i and j uniform, both brought
 //    to the candidate time (001 eq. 23), real with probability |v_i - v_j| / U_max (001 eq. 26), U_max raised
-//    as in kernel/schemes/event_white_noise.hpp;
+//    as in kernel/schemes/event_scheme.hpp;
 //  - per-particle bounds (001 eq. 24 allows B_max(i, j) to depend on the pair): in an epoch [t_0, t_e],
 //        W_k = |v_k - V| + kappa sqrt(2 beta (t_e - t_k))
 //    bounds |v_k(t) - V| for every t <= t_e unless the particle's Brownian increment since its last update
@@ -102,7 +102,7 @@ class Gas {
   std::uniform_real_distribution<double> uniform_;
 };
 
-/// 001 sec. 4, steps 2.1-2.10, with the raise of U_max as granmc does it (event_white_noise.hpp).
+/// 001 sec. 4, steps 2.1-2.10, with the raise of U_max as granmc does it (event_scheme.hpp).
 Count paper_majorant(Gas& gas) {
   Count count;
   const std::size_t n = gas.size();

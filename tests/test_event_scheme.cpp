@@ -18,9 +18,11 @@
 #include <gtest/gtest.h>
 
 #include "kernel/analysis/replica_statistics.hpp"
-#include "kernel/collide/isotropic_kernels.hpp"
+#include "kernel/collide/hard_sphere.hpp"
+#include "kernel/collide/maxwell_pseudomolecules.hpp"
+#include "kernel/collide/variable_hard_spheres.hpp"
 #include "kernel/observe/moments.hpp"
-#include "kernel/schemes/event_white_noise.hpp"
+#include "kernel/schemes/event_scheme.hpp"
 #include "kernel/schemes/initial_state.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/white_noise.hpp"
@@ -219,7 +221,7 @@ TEST(EventScheme, FastParticleConservesEnergyAndGrowsTheMajorant) {
   SpeciesStore& store = initial.species[0];
   store.set_velocity(0, store.velocity(0) + Vec3{1000.0, 0.0, 0.0});  // 1000 thermal speeds
   const SpeciesMoments before = species_moments(store);
-  EventWhiteNoise<IsotropicHardSphereKernel> sim(s, 0, {}, initial);
+  EventScheme<HardSphere> sim(s, 0, {}, initial);
   const double majorant0 = sim.majorant();
   for (double t : {0.01, 0.1, 0.2}) sim.advance_to(t);
   const SpeciesMoments after = species_moments(sim.state().species[0]);
@@ -319,8 +321,8 @@ void expect_registers_match_one_by_one(const Scene& s, Kernel kernel, bool fast_
     BasicSpeciesStore<Real>& store = initial.species[0];
     store.set_velocity(0, store.velocity(0) + Vec3{30.0, 0.0, 0.0});
   }
-  BasicEventWhiteNoise<Real, Kernel, true> registers(s, 0, kernel, initial);
-  BasicEventWhiteNoise<Real, Kernel, false> one_by_one(s, 0, kernel, initial);
+  BasicEventScheme<Real, Kernel, true> registers(s, 0, kernel, initial);
+  BasicEventScheme<Real, Kernel, false> one_by_one(s, 0, kernel, initial);
   for (int k = 1; k <= s.run.samples; ++k) {
     const double t = s.run.t_end * k / s.run.samples;
     registers.advance_to(t);
@@ -365,9 +367,9 @@ void expect_registers_match_one_by_one_for_each_kernel() {
       const Scene s = scene_from_toml(
           text, {{"t_end", n == 64 ? 2.0 : 0.1}, {"particles", n}, {"rate", 16.0 / (4.0 * std::numbers::pi)}});
       SCOPED_TRACE("n = " + std::to_string(n) + (fast ? ", a fast particle" : ""));
-      expect_registers_match_one_by_one<Real>(s, IsotropicHardSphereKernel{}, fast);
-      expect_registers_match_one_by_one<Real>(s, VhsKernel{0.5}, fast);
-      expect_registers_match_one_by_one<Real>(s, VhsKernel{0.3}, fast);
+      expect_registers_match_one_by_one<Real>(s, HardSphere{}, fast);
+      expect_registers_match_one_by_one<Real>(s, VariableHardSpheres{0.5}, fast);
+      expect_registers_match_one_by_one<Real>(s, VariableHardSpheres{0.3}, fast);
     }
   }
 }

@@ -291,7 +291,7 @@ void check_lane_helpers() {
 }  // namespace
 
 TEST(Numerics, LaneHelpersAreTheScalarOperations) {
-  // The event scheme's candidates in registers (schemes/event_white_noise.hpp) take their outcomes as
+  // The event scheme's candidates in registers (schemes/event_scheme.hpp) take their outcomes as
   // bits, round velocities as a float store does, and check that a register's pairs share no particle
   // with these; each for the build's registers and for two narrower ones (other branches of the helpers).
   check_lane_helpers<SimdDouble::arch_type>();

@@ -147,7 +147,7 @@ void check_lanes() {
 }  // namespace
 
 TEST(SpeciesStore, RegistersOfParticlesLoadAndStoreAsOneByOne) {
-  // The event scheme's candidates in registers (schemes/event_white_noise.hpp) read and write their
+  // The event scheme's candidates in registers (schemes/event_scheme.hpp) read and write their
   // particles a register at a time; with AVX-512 the records are transposed, which must give what the
   // one-by-one accessors give, rounding included; narrower registers take the lane-by-lane branch.
   check_lanes<double, SimdDouble::arch_type>();

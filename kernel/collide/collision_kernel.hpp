@@ -1,9 +1,9 @@
 #pragma once
 // What a collision kernel is, as C++20 concepts: the contract the schemes rely on, checked where a kernel is
-// used (schemes/dsmc.hpp, schemes/event_white_noise.hpp) and by every alternative of the run plan.
+// used (schemes/dsmc.hpp, schemes/event_scheme.hpp). A kernel is one struct per physical law
+// (collide/hard_sphere.hpp, maxwell_pseudomolecules.hpp, variable_hard_spheres.hpp) with both faces.
 //
-// A time-stepped kernel (the impact-direction form of 000 sec. 3: collide/hard_sphere.hpp,
-// maxwell_pseudomolecules.hpp, variable_hard_spheres.hpp) gives the velocity-dependent factor of the rate
+// A time-stepped kernel (the impact-direction form of 000 sec. 3) gives the velocity-dependent factor of the rate
 // omega_kl of a pair with direction sigma-hat; the pair's constant prefactor lives in PairCoefficients. It has
 // lambda (omega scales as |g|^lambda, so a physical rate is u^lambda times the stored-unit one),
 // rate(g.sigma, |g|^2), bound(U) >= rate for relative speeds up to U, and from_scene(scene) (the kernel's
@@ -14,9 +14,12 @@
 // candidates in SIMD), and screen_candidates says whether that screen can reject any: false when the mean
 // rate is a constant, so that every candidate collides. name and explanation are what `--explain` prints.
 //
-// An event kernel (001 eqs. 6-8, collide/isotropic_kernels.hpp) is B = rate |u|^lambda with e uniform: it
-// has lambda(), constant_rate (every candidate is real, no majorant) and acceptance_thresholds, which maps a
-// batch of uniforms u to u^(1 / lambda) for the test u^(1 / lambda) < |u| / U_max (001 eq. 26).
+// An event kernel (001 eqs. 6-8) is B = rate |u|^lambda with e uniform on the sphere
+// (collide/isotropic_scattering.hpp), rate = gamma C_lambda (001 eq. 1). The event scheme draws candidates at
+// the constant majorant rate of 001 eq. (25) and keeps a candidate with probability (|u| / U_max)^lambda
+// (001 eq. 26), tested as u^(1 / lambda) < |u| / U_max on a batch of uniforms: the kernel has lambda,
+// constant_rate (every candidate is real: no relative speed and no majorant is computed) and
+// acceptance_thresholds, which maps a batch of u to u^(1 / lambda).
 #include <concepts>
 #include <span>
 
@@ -41,7 +44,7 @@ template <class K>
 concept EventKernel = requires(const K& kernel, std::span<double, 64> uniforms) {
   { K::name } -> std::convertible_to<const char*>;
   { K::constant_rate } -> std::convertible_to<bool>;
-  { kernel.lambda() } -> std::same_as<double>;
+  { kernel.lambda } -> std::convertible_to<double>;
   kernel.acceptance_thresholds(uniforms);
 };
 

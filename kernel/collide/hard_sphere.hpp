@@ -1,9 +1,14 @@
 #pragma once
-// Hard-sphere collision kernel of the Enskog operator (000 eq. 2): a pair (k, l) with direction
-// sigma-hat collides at the rate omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) |g.sigma|
-// (000 sec. 3, step 2). The evaluator gives the velocity-dependent factor; the pair's constant
-// prefactor 4 pi sigma_ij^2 n_j chi_ij lives in PairCoefficients. A SteppedKernel (collide/collision_kernel.hpp).
+// Hard spheres, in both forms of collide/collision_kernel.hpp.
+//  - Time-stepped (the Enskog operator, 000 eq. 2): a pair (k, l) with direction sigma-hat collides at the rate
+//    omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) |g.sigma| (000 sec. 3, step 2). The evaluator gives
+//    the velocity-dependent factor; the pair's constant prefactor 4 pi sigma_ij^2 n_j chi_ij lives in
+//    PairCoefficients.
+//  - Event (001 eq. 6): B = rate |u|, e uniform; a candidate is kept with probability |u| / U_max, the test
+//    u < |u| / U_max needing no transformation of u.
 #include <cmath>
+#include <cstddef>
+#include <span>
 
 #include "kernel/collide/collision_kernel.hpp"
 
@@ -28,8 +33,12 @@ struct HardSphere {
     return 0.25 * sqrt(g2);
   }
   static constexpr double mean_bound(double relative_speed) noexcept { return 0.25 * relative_speed; }
+
+  static constexpr bool constant_rate = false;
+  template <std::size_t N>
+  static void acceptance_thresholds(std::span<double, N>) noexcept {}  // u^(1 / 1) = u
 };
 
-static_assert(SteppedKernel<HardSphere>);
+static_assert(SteppedKernel<HardSphere> && EventKernel<HardSphere>);
 
 }  // namespace granmc

@@ -1,12 +1,17 @@
 #pragma once
-// Maxwell pseudomolecules (001 eq. 7) in the impact-direction form of the time-stepped scheme: a pair
-// with direction sigma-hat collides at omega_kl = prefactor Theta(g.sigma) (g.sigma) / |g|. The post-
+// Maxwell pseudomolecules (001 eq. 7), B = rate, in both forms of collide/collision_kernel.hpp.
+//  - Event: every candidate collides (the majorant rate is the rate), so no relative speed and no majorant is
+//    computed at all.
+//  - Time-stepped, in the impact-direction form: a pair with direction sigma-hat collides at omega_kl = prefactor
+//  Theta(g.sigma) (g.sigma) / |g|. The post-
 // collision rule of 000 eqs. (14-15) with sigma-hat drawn with this weight is the rule of 001 eq. (4) with
 // e uniform (the elastic scattering direction e = g' / |g| is uniform when the weight is (g.sigma)/|g|),
 // and the mean of omega over sigma-hat is prefactor / 4, independent of |g|: with prefactor = 16 pi rate
 // (PairCoefficients for collision.rate > 0) the total rate per pair is 4 pi rate, the kernel B = rate.
 // docs/physics.md derives both.
 #include <cmath>
+#include <cstddef>
+#include <span>
 
 #include "kernel/collide/collision_kernel.hpp"
 
@@ -26,8 +31,12 @@ struct MaxwellPseudomolecules {
   static constexpr bool screen_candidates = false;  // every candidate collides
   static constexpr double mean_rate(double /*g2*/) noexcept { return 0.25; }
   static constexpr double mean_bound(double /*relative_speed*/) noexcept { return 0.25; }
+
+  static constexpr bool constant_rate = true;
+  template <std::size_t N>
+  static void acceptance_thresholds(std::span<double, N>) noexcept {}  // never tested
 };
 
-static_assert(SteppedKernel<MaxwellPseudomolecules>);
+static_assert(SteppedKernel<MaxwellPseudomolecules> && EventKernel<MaxwellPseudomolecules>);
 
 }  // namespace granmc

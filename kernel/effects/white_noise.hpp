@@ -2,7 +2,7 @@
 // White-noise heating dV = sqrt(2 beta) dW (001 eq. 1, the stochastic thermostat of Montanero and Santos)
 // in the time-stepped scheme: after each collision stage every velocity gets the Brownian increment of
 // the step, V += sqrt(2 beta dt) xi (001 eq. 23), a first-order splitting of noise and collisions (001
-// sec. 4 describes it; the event scheme, schemes/event_white_noise.hpp, has no splitting error).
+// sec. 4 describes it; the event scheme, schemes/event_scheme.hpp, has no splitting error).
 // Random words: purpose white_noise_kick, sub = species, step = time step, index = particle; the normals
 // of 16 particles at a time in SIMD (core/batch_variates.hpp).
 #include <cmath>

@@ -61,8 +61,8 @@ struct ReplicaSeries {
   std::uint64_t candidates = 0;                // candidate pairs tested
   std::uint64_t majorant_updates = 0;          // times omega_max (U_max for the event scheme) was raised
   std::uint64_t majorant_violations = 0;       // event scheme: candidates whose relative speed exceeded the
-                                          // U_max their waiting time was drawn with (schemes/event_white_noise.hpp)
-  std::vector<double> majorant_growth;  // per ordered pair: final / initial omega_max (stored units)
+                                               // U_max their waiting time was drawn with (schemes/event_scheme.hpp)
+  std::vector<double> majorant_growth;         // per ordered pair: final / initial omega_max (stored units)
   // Shear runs (000 secs. 2-3; observe/pressure_tensor.hpp), each at every sample time:
   std::vector<SymTensor> pressure_kinetic;      // P^k / (n T) at the sample (000 eq. 17)
   std::vector<SymTensor> pressure_collisional;  // P^c / (n T) averaged since the previous sample (eq. 18);

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "kernel/observe/gas_observation.hpp"
-#include "kernel/schemes/event_white_noise.hpp"
+#include "kernel/schemes/event_scheme.hpp"
 #include "kernel/schemes/run_options.hpp"
 
 namespace granmc {
@@ -13,7 +13,7 @@ namespace granmc {
 template <class Real, class Kernel>
 ReplicaSeries run_event_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
                                 const RunOptions& options, Kernel kernel) {
-  BasicEventWhiteNoise<Real, Kernel> sim(scene, replica, kernel);
+  BasicEventScheme<Real, Kernel> sim(scene, replica, kernel);
   ReplicaSeries series;
   series.species.resize(1);
   for (std::size_t k = 0; k < times.size(); ++k) {

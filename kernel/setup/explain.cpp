@@ -43,7 +43,7 @@ double expected_max_speed(double particles) {
 ///  - time-stepped DSMC, cooling state at alpha = 0.8: `make hcs-alpha08` (16 x 10^5 particles, 1.45e8
 ///    candidates in 0.93-1.14 s) and the same scene with 2 x 10^7 particles to t = 2 (5.6e8 in 10-12 s).
 double event_candidates_per_second(const EventPlan& plan, bool beyond_caches) {
-  const double maxwell = std::holds_alternative<MaxwellKernel>(plan.kernel) ? 1.4 : 1.0;
+  const double maxwell = std::holds_alternative<MaxwellPseudomolecules>(plan.kernel) ? 1.4 : 1.0;
   if (!beyond_caches) return maxwell * 2.7e7;
   return maxwell * (std::holds_alternative<StoredAs<float>>(plan.storage) ? 1.77e7 : 1.40e7);
 }
@@ -71,7 +71,7 @@ void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
     out.effects.push_back("white noise by lazy Brownian updates at collision and sample times (001 eq. 23)");
   else
     out.absent.push_back("white noise");
-  out.effects.push_back(std::holds_alternative<MaxwellKernel>(plan.kernel)
+  out.effects.push_back(std::holds_alternative<MaxwellPseudomolecules>(plan.kernel)
                             ? "every candidate collides (Maxwell kernel: no majorant)"
                             : "constant majorant U_max, raised at candidates, reset at samples");
   explain_gas_memory(scene, out);

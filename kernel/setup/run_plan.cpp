@@ -70,13 +70,13 @@ EventPlan event_plan(const Scene& scene) {
   if (scene.shear_rate != 0.0) refuse("the event scheme with a [shear] rate");
   if (scene.relaxation) refuse("the event scheme with the [relaxation] term");
   // The kernel follows lambda (the scene file fixes it for "maxwell" and "hard-sphere").
-  EventKernelChoice kernel = VhsKernel{c.lambda};
-  if (c.lambda == 0.0) kernel = MaxwellKernel{};
-  if (c.lambda == 1.0) kernel = IsotropicHardSphereKernel{};
+  KernelChoice kernel = VariableHardSpheres{c.lambda};
+  if (c.lambda == 0.0) kernel = MaxwellPseudomolecules{};
+  if (c.lambda == 1.0) kernel = HardSphere{};
   return {kernel, storage_choice(scene), scene.thermostat.kind == ThermostatKind::white_noise};
 }
 
-SteppedKernelChoice stepped_kernel(const Scene& scene) {
+KernelChoice stepped_kernel(const Scene& scene) {
   switch (scene.collision.kernel) {
     case CollisionKernel::maxwell:
       return MaxwellPseudomolecules{};

@@ -10,7 +10,7 @@
 // effects, the storage precision, and the collision backend. Not every product is supported:
 // stepped_refusal says which are not, at compile time, so the dispatch instantiates only the supported
 // ones and make_plan refuses the others with the same reason. Adding a collision kernel is one evaluator
-// file in collide/ and one alternative in SteppedKernelChoice, with its line in make_plan
+// file in collide/ and one alternative in KernelChoice, with its line in make_plan
 // (docs/ARCHITECTURE.md, "Adding a kernel").
 #include <stdexcept>
 #include <string>
@@ -22,7 +22,6 @@
 #include "kernel/collide/bath_power_law.hpp"
 #include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/hard_sphere.hpp"
-#include "kernel/collide/isotropic_kernels.hpp"
 #include "kernel/collide/maxwell_pseudomolecules.hpp"
 #include "kernel/collide/variable_hard_spheres.hpp"
 #include "kernel/core/scene.hpp"
@@ -54,8 +53,9 @@ struct EffectList {
   static constexpr bool has = (std::is_same_v<E, Effects> || ...);
 };
 
-/// The time-stepped scheme's collision kernels (000 sec. 3 and its kernel form of 001).
-using SteppedKernelChoice = std::variant<HardSphere, MaxwellPseudomolecules, VariableHardSpheres>;
+/// The collision kernels, one per physical law, each with the time-stepped and the event form
+/// (collide/collision_kernel.hpp).
+using KernelChoice = std::variant<HardSphere, MaxwellPseudomolecules, VariableHardSpheres>;
 /// Uniform shear flow: none, the inertial force (Boltzmann), or with the Enskog shift of the contact velocity.
 using ShearChoice =
     std::variant<EffectList<>, EffectList<LagrangianShear>, EffectList<LagrangianShear, EnskogShearShift>>;
@@ -111,19 +111,16 @@ inline constexpr bool stepped_supported = stepped_refusal<Kernel, Shear, Thermos
 
 /// Time-stepped ESMC/DSMC of a gas (000 sec. 3; 001's time-stepped counterpart; 003).
 struct SteppedPlan {
-  SteppedKernelChoice kernel;
+  KernelChoice kernel;
   ShearChoice shear;
   ThermostatChoice thermostat;
   StorageChoice storage;
   BackendChoice backend;
 };
 
-/// The event kernels of the time-step-free scheme, B = rate |u|^lambda with e uniform (001 eqs. 6-8).
-using EventKernelChoice = std::variant<MaxwellKernel, IsotropicHardSphereKernel, VhsKernel>;
-
 /// The time-step-free white-noise scheme (001 sec. 4).
 struct EventPlan {
-  EventKernelChoice kernel;
+  KernelChoice kernel;
   StorageChoice storage;
   bool white_noise = false;  // beta > 0 acts by lazy Brownian updates (001 eq. 23)
 };

@@ -70,18 +70,18 @@ inline Thinning thinning(double g2, double threshold, double majorant, double ma
 /// in_registers = false every candidate goes through `candidate`, one after the other: the reference the
 /// tests hold candidates_in_simd to, bit for bit.
 template <class Real, EventKernel Kernel, bool in_registers = true>
-class BasicEventWhiteNoise {
+class BasicEventScheme {
   using Store = BasicSpeciesStore<Real>;
   using State = BasicGasState<Real>;
 
  public:
   /// From the scene's initial Maxwellian.
-  BasicEventWhiteNoise(const Scene& scene, std::uint64_t replica, Kernel kernel)
-      : BasicEventWhiteNoise(scene, replica, kernel,
-                             maxwellian_state<Real>(scene, RandomStream(scene.run.seed, replica))) {}
+  BasicEventScheme(const Scene& scene, std::uint64_t replica, Kernel kernel)
+      : BasicEventScheme(scene, replica, kernel, maxwellian_state<Real>(scene, RandomStream(scene.run.seed, replica))) {
+  }
 
   /// From a given initial state (one species, all last-update times 0, state.time = 0).
-  BasicEventWhiteNoise(const Scene& scene, std::uint64_t replica, Kernel kernel, State initial)
+  BasicEventScheme(const Scene& scene, std::uint64_t replica, Kernel kernel, State initial)
       : kernel_(kernel),
         rng_(scene.run.seed, replica),
         state_(std::move(initial)),
@@ -92,7 +92,7 @@ class BasicEventWhiteNoise {
     noise_ = 2.0 * scene.thermostat.beta / (u * u);  // 2 beta in stored units per unit time
     // pi_hat = 2 pi rate (n - 1) (u U_max)^lambda  (001 eq. 25; U_max here in stored units)
     rate_prefactor_ = 2.0 * std::numbers::pi * scene.collision.rate * static_cast<double>(particles_ - 1) *
-                      std::pow(u, kernel_.lambda());
+                      std::pow(u, kernel_.lambda);
     candidate_rate_ = rate_prefactor_;  // Maxwell: U_max^0 = 1, and no majorant is kept
     reset_majorant();
     prepare(batches_[0], 0);
@@ -140,7 +140,7 @@ class BasicEventWhiteNoise {
   void set_majorant(double value) noexcept {
     majorant_ = value;
     majorant2_ = value * value;
-    candidate_rate_ = rate_prefactor_ * std::pow(majorant_, kernel_.lambda());
+    candidate_rate_ = rate_prefactor_ * std::pow(majorant_, kernel_.lambda);
   }
 
   /// The state-independent part of `batch_size` consecutive draws. Draw d depends only on the counter d:
@@ -442,6 +442,6 @@ class BasicEventWhiteNoise {
 
 /// Double storage, the default.
 template <class Kernel>
-using EventWhiteNoise = BasicEventWhiteNoise<double, Kernel>;
+using EventScheme = BasicEventScheme<double, Kernel>;
 
 }  // namespace granmc
