@@ -71,130 +71,181 @@ double majorant_bound(const Kernel& kernel, const PairCoefficients& p, double re
 
 namespace detail {
 
-/// The stage with the number of ordered pairs known at compile time when it is one (`one_pair`): then the
-/// pair's constants, majorant and tally live in locals (registers) and no candidate looks them up. The
-/// arithmetic and its order are the same in both forms, so the results are the same bits.
+/// The batched stage of one step (collide_step below), split into its named parts: draw (a batch's random
+/// words, pairs and particles), screen (the candidates a batch cannot reject with certainty), impact
+/// directions (sigma-hat and g.sigma of the screened candidates, a register at a time), and apply (the
+/// acceptance and the collision, candidate by candidate in order). With the number of ordered pairs known at
+/// compile time when it is one (`one_pair`), the pair's constants, majorant and tally live in one slot and no
+/// candidate looks them up. The arithmetic and its order are the same in both forms, so the results are the
+/// same bits.
 template <class Kernel, class Shift, bool one_pair, std::uint64_t batch, class Real>
-void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
-                     std::span<const std::uint64_t> candidates, const RandomStream& rng,
-                     std::span<CollisionTally> tallies, const Kernel& kernel, const Shift& shift) noexcept {
+class BatchedStage {
   static_assert(batch > 0);
-  constexpr std::size_t max_pairs = 4;  // ordered pairs of at most two species (the scene's limit)
-  const std::size_t n_pairs = one_pair ? 1 : pairs.size();
-  // The pair choice: cumulative[k] = candidates left in pairs 0..k (below 2^53, so exact as doubles);
-  // past the last pair the largest value, so no candidate is assigned beyond it. Integers, so that the
-  // update below compiles to arithmetic, not to branches.
-  std::int64_t cumulative[max_pairs - 1];
-  std::uint64_t total = 0;
+  static constexpr std::size_t max_pairs = 4;  // ordered pairs of at most two species (the scene's limit)
   // The per-pair state the candidates update, one slot per pair: with one pair a single slot, and the pair's
-  // constants copied to a local, so that the compiler keeps them in registers (the velocity stores could
-  // alias a PairCoefficients in memory) and the one-pair loop matches a hand-written one.
-  constexpr std::size_t slots = one_pair ? 1 : max_pairs;
-  double majorant[slots];
-  CollisionTally tally[slots];
-  const PairCoefficients only_pair = one_pair ? pairs[0] : PairCoefficients{};
-  for (std::size_t q = 0; q < n_pairs; ++q) {
-    total += candidates[q];
-    if (q + 1 < max_pairs) cumulative[q] = static_cast<std::int64_t>(total);
-    majorant[q] = omega_max[q];
-    tally[q] = tallies[q];
-    tally[q].candidates += candidates[q];
-  }
-  for (std::size_t k = n_pairs == 0 ? 0 : n_pairs - 1; k + 1 < max_pairs; ++k)
-    cumulative[k] = std::numeric_limits<std::int64_t>::max();
-  // Per pair, once per step: the two stores and the ranges the indices are drawn from (N_j - 1 within a
-  // species). Each candidate then finds its two particles as it is drawn, and the collision loop reads
-  // them without going through the pair and the store again (for a mixture that chain of loads stood in
-  // front of every velocity load: docs/performance.md, effects).
+  // constants copied, so that the compiler keeps them in registers (the velocity stores could alias a
+  // PairCoefficients in memory) and the one-pair loop matches a hand-written one.
+  static constexpr std::size_t slots = one_pair ? 1 : max_pairs;
   using Store = BasicSpeciesStore<Real>;
-  Store* store_k[max_pairs];
-  Store* store_l[max_pairs];
-  std::uint64_t range_k[max_pairs], range_l[max_pairs];
-  bool same_species[max_pairs];
-  for (std::size_t q = 0; q < n_pairs; ++q) {
-    store_k[q] = &state.species[pairs[q].i];
-    store_l[q] = &state.species[pairs[q].j];
-    same_species[q] = pairs[q].i == pairs[q].j;
-    range_k[q] = store_k[q]->size();
-    range_l[q] = same_species[q] ? range_k[q] - 1 : store_l[q]->size();
-  }
-  // Whether a batch's candidates are screened before they act (below): for a kernel whose rate varies.
-  // With the acceptance on the mean only the candidates that pass the screen need a direction.
-  constexpr bool screened = Kernel::screen_candidates;
-  constexpr bool directions_for_all = !screened || Shift::active;
+  // Whether a batch's candidates are screened before they act: for a kernel whose rate varies. With the
+  // acceptance on the mean only the candidates that pass the screen need a direction.
+  static constexpr bool screened = Kernel::screen_candidates;
+  static constexpr bool directions_for_all = !screened || Shift::active;
   // A batch's values in whole SIMD registers.
-  constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
+  static constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
   using Lanes = std::array<double, lanes>;
-  // The draws of a batch: its candidates' pairs, particles, acceptance uniforms and the uniforms of their
-  // directions n; the directions themselves where every candidate needs one (with the acceptance on the
-  // mean and the screen, only the candidates that pass it get theirs).
+  static_assert(!screened || batch <= 64, "the screen keeps a batch's outcomes in one 64-bit mask");
+  static constexpr std::size_t slots_log2 = 14;  // of `seen_`
+
+  /// The draws of a batch: its candidates' pairs, particles, acceptance uniforms and the uniforms of their
+  /// directions n; the directions themselves where every candidate needs one (with the acceptance on the
+  /// mean and the screen, only the candidates that pass it get theirs).
   struct Drawn {
     typename Store::Particle pk[batch], pl[batch];
     std::uint8_t qs[batch];
     Lanes accept;
     Lanes dir1, dir2, sx, sy, sz;
   };
-  std::array<std::uint64_t, 2 * batch> steps, index;
-  steps.fill(state.step);
-  // The candidates' particle indices from their ranges lane by lane (uniform_indices) when every range is
-  // below 2^32, else one by one (uniform_index): the same values.
-  bool narrow = true;
-  for (std::size_t q = 0; q < n_pairs; ++q)
-    narrow = narrow && std::max(range_k[q], range_l[q]) < (std::uint64_t{1} << 32);
-  std::array<std::uint32_t, batch> ranges_k{}, ranges_l{};
-  if (one_pair && narrow) {
-    ranges_k.fill(static_cast<std::uint32_t>(range_k[0]));
-    ranges_l.fill(static_cast<std::uint32_t>(range_l[0]));
+
+ public:
+  BatchedStage(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<const double> omega_max,
+               std::span<const std::uint64_t> candidates, const RandomStream& rng,
+               std::span<const CollisionTally> tallies, const Kernel& kernel, const Shift& shift) noexcept
+      : pairs_(pairs),
+        rng_(rng),
+        kernel_(kernel),
+        shift_(shift),
+        n_pairs_(one_pair ? 1 : pairs.size()),
+        only_pair_(one_pair ? pairs[0] : PairCoefficients{}) {
+    // The pair choice: cumulative_[k] = candidates left in pairs 0..k (below 2^53, so exact as doubles);
+    // past the last pair the largest value, so no candidate is assigned beyond it. Integers, so that the
+    // update in draw compiles to arithmetic, not to branches.
+    for (std::size_t q = 0; q < n_pairs_; ++q) {
+      total_ += candidates[q];
+      if (q + 1 < max_pairs) cumulative_[q] = static_cast<std::int64_t>(total_);
+      majorant_[q] = omega_max[q];
+      tally_[q] = tallies[q];
+      tally_[q].candidates += candidates[q];
+    }
+    for (std::size_t k = n_pairs_ == 0 ? 0 : n_pairs_ - 1; k + 1 < max_pairs; ++k)
+      cumulative_[k] = std::numeric_limits<std::int64_t>::max();
+    // Per pair, once per step: the two stores and the ranges the indices are drawn from (N_j - 1 within a
+    // species). Each candidate then finds its two particles as it is drawn, and the collision loop reads
+    // them without going through the pair and the store again (for a mixture that chain of loads stood in
+    // front of every velocity load: docs/performance.md, effects).
+    for (std::size_t q = 0; q < n_pairs_; ++q) {
+      store_k_[q] = &state.species[pairs[q].i];
+      store_l_[q] = &state.species[pairs[q].j];
+      same_species_[q] = pairs[q].i == pairs[q].j;
+      range_k_[q] = store_k_[q]->size();
+      range_l_[q] = same_species_[q] ? range_k_[q] - 1 : store_l_[q]->size();
+    }
+    steps_.fill(state.step);
+    // The candidates' particle indices from their ranges lane by lane (uniform_indices) when every range is
+    // below 2^32, else one by one (uniform_index): the same values.
+    for (std::size_t q = 0; q < n_pairs_; ++q)
+      narrow_ = narrow_ && std::max(range_k_[q], range_l_[q]) < (std::uint64_t{1} << 32);
+    if (one_pair && narrow_) {
+      ranges_k_.fill(static_cast<std::uint32_t>(range_k_[0]));
+      ranges_l_.fill(static_cast<std::uint32_t>(range_l_[0]));
+    }
   }
-  std::array<std::uint64_t, batch> ks, ls;
-  // Draws candidates s0 .. s0 + m - 1 into d. They depend on the counters and the pair counts only, never
-  // on a velocity, so a batch can be drawn before the one in front of it has collided.
-  auto draw_batch = [&](Drawn& d, std::uint64_t s0, std::uint64_t m) {
+
+  /// Every candidate of the step, with two batches in flight: while the candidates of one collide, the next
+  /// one is drawn, and candidate b of the current batch prefetches the records of candidate b of the next, a
+  /// batch ahead of their use. The prefetches are spread over the batch: issued a batch's 128 at once, more
+  /// than the core's outstanding misses, the last ones waited a memory latency (as in the event scheme,
+  /// docs/performance.md).
+  void run() noexcept {
+    if (total_ > 0) {
+      draw(drawn_[0], 0, std::min(batch, total_));
+      for (std::uint64_t b = 0; b < std::min(batch, total_); ++b) {
+        drawn_[0].pk[b].prefetch();
+        drawn_[0].pl[b].prefetch();
+      }
+    }
+    for (std::uint64_t s0 = 0, current = 0; s0 < total_; s0 += batch, current ^= 1) {
+      const std::uint64_t m = std::min(batch, total_ - s0);
+      const std::uint64_t m_next = s0 + m < total_ ? std::min(batch, total_ - s0 - m) : 0;
+      const Drawn& d = drawn_[current];
+      Drawn& next = drawn_[current ^ 1];
+      if (m_next > 0) draw(next, s0 + m, m_next);
+      if constexpr (screened && Shift::active) {
+        for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1) {
+          const auto b = static_cast<std::uint64_t>(std::countr_zero(full_test));
+          test_and_apply(d, b, d.sx, d.sy, d.sz, b);
+        }
+      } else if constexpr (screened) {
+        apply_screened(d, impact_directions(d, screen(d, m, next, m_next)));
+      } else {
+        for (std::uint64_t b = 0; b < m; ++b) {
+          if (b < m_next) {
+            next.pk[b].prefetch();
+            next.pl[b].prefetch();
+          }
+          test_and_apply(d, b, d.sx, d.sy, d.sz, b);
+        }
+      }
+    }
+  }
+
+  /// The raised majorants and the step's tallies, per pair.
+  void finish(std::span<double> omega_max, std::span<CollisionTally> tallies) const noexcept {
+    for (std::size_t q = 0; q < n_pairs_; ++q) {
+      omega_max[q] = majorant_[q];
+      tallies[q] = tally_[q];
+    }
+  }
+
+ private:
+  /// Draws candidates s0 .. s0 + m - 1 into d. They depend on the counters and the pair counts only, never
+  /// on a velocity, so a batch can be drawn before the one in front of it has collided.
+  void draw(Drawn& d, std::uint64_t s0, std::uint64_t m) noexcept {
     // Blocks 2s (lane b) and 2s + 1 (lane batch + b) of the batch's candidates s = s0 + b, all at once,
     // each kind in consecutive lanes so that its words convert in SIMD (past the end of the step in the
     // last batch, unused).
     for (std::uint64_t b = 0; b < batch; ++b) {
-      index[b] = 2 * (s0 + b);
-      index[batch + b] = 2 * (s0 + b) + 1;
+      index_[b] = 2 * (s0 + b);
+      index_[batch + b] = 2 * (s0 + b) + 1;
     }
-    const RandomBlocks<2 * batch> blocks = rng.blocks(RngPurpose::collision_pair, 0, steps, index);
+    const RandomBlocks<2 * batch> blocks = rng_.blocks(RngPurpose::collision_pair, 0, steps_, index_);
     const auto& w = blocks.word;
     auto pick = [&](std::size_t word) { return std::span<const std::uint32_t, batch>(w[word].data(), batch); };
     const auto draw = [](std::uint64_t b) { return batch + b; };
     if constexpr (!one_pair) {
       for (std::uint64_t b = 0; b < m;
            ++b) {  // the next candidate's pair, without replacement: a uniformly random interleaving
-        const double r = uniform_open(w[3][draw(b)]) * static_cast<double>(total - (s0 + b));
+        const double r = uniform_open(w[3][draw(b)]) * static_cast<double>(total_ - (s0 + b));
         // q = the number of cumulative counts <= r, without branches (a loop here mispredicted 0.86 times
         // per candidate, callgrind, docs/performance.md). r < total - s = candidates left, so q is a pair
         // with candidates left. The same q as subtracting the counts from r one by one: r < 2^53, so r minus
         // an integer below it is exact.
         std::size_t q = 0;
         for (std::size_t k = 0; k + 1 < max_pairs; ++k)
-          q += static_cast<std::size_t>(r >= static_cast<double>(cumulative[k]));
-        for (std::size_t k = 0; k + 1 < max_pairs; ++k) cumulative[k] -= static_cast<std::int64_t>(k >= q);
+          q += static_cast<std::size_t>(r >= static_cast<double>(cumulative_[k]));
+        for (std::size_t k = 0; k + 1 < max_pairs; ++k) cumulative_[k] -= static_cast<std::int64_t>(k >= q);
         d.qs[b] = static_cast<std::uint8_t>(q);
-        ranges_k[b] = static_cast<std::uint32_t>(range_k[q]);  // used only when narrow
-        ranges_l[b] = static_cast<std::uint32_t>(range_l[q]);
+        ranges_k_[b] = static_cast<std::uint32_t>(range_k_[q]);  // used only when narrow
+        ranges_l_[b] = static_cast<std::uint32_t>(range_l_[q]);
       }
     }
-    if (narrow) {
-      uniform_indices(pick(0), pick(1), ranges_k, ks);
-      uniform_indices(pick(2), pick(3), ranges_l, ls);
+    if (narrow_) {
+      uniform_indices(pick(0), pick(1), ranges_k_, ks_);
+      uniform_indices(pick(2), pick(3), ranges_l_, ls_);
     } else {
       for (std::uint64_t b = 0; b < m; ++b) {
         const std::size_t q = one_pair ? 0 : d.qs[b];
-        ks[b] = uniform_index(w[0][b], w[1][b], range_k[q]);
-        ls[b] = uniform_index(w[2][b], w[3][b], range_l[q]);
+        ks_[b] = uniform_index(w[0][b], w[1][b], range_k_[q]);
+        ls_[b] = uniform_index(w[2][b], w[3][b], range_l_[q]);
       }
     }
     for (std::uint64_t b = 0; b < m; ++b) {
       const std::size_t q = one_pair ? 0 : d.qs[b];
       // Uniform over the other N_i - 1 particles; branch-free: a branch here is taken half the time at
       // random, and its mispredictions discard the overlapped work of the next candidates.
-      const std::uint64_t l = ls[b] + static_cast<std::uint64_t>((one_pair || same_species[q]) & (ls[b] >= ks[b]));
-      d.pk[b] = store_k[q]->particle(ks[b]);
-      d.pl[b] = store_l[q]->particle(l);
+      const std::uint64_t l = ls_[b] + static_cast<std::uint64_t>((one_pair || same_species_[q]) & (ls_[b] >= ks_[b]));
+      d.pk[b] = store_k_[q]->particle(ks_[b]);
+      d.pl[b] = store_l_[q]->particle(l);
     }
     for (std::uint64_t b = 0; b < batch; ++b) {
       d.dir1[b] = uniform_open(w[0][draw(b)]);
@@ -204,37 +255,40 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     if constexpr (directions_for_all)  // the same bits as unit_vector, in SIMD
       unit_vectors(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2), std::span(d.sx),
                    std::span(d.sy), std::span(d.sz));
-  };
-  // The acceptance of a candidate of pair q with rate omega and uniform u (000 sec. 3, step 2): when
-  // omega exceeds the majorant, accepted and omega_max^(ij) := omega.
-  auto accepted = [&](std::size_t q, double omega, double u) {
-    if (omega > majorant[q]) {
-      majorant[q] = omega;
-      ++tally[q].majorant_updates;
+  }
+
+  /// The acceptance of a candidate of pair q with rate omega and uniform u (000 sec. 3, step 2): when
+  /// omega exceeds the majorant, accepted and omega_max^(ij) := omega.
+  bool accepted(std::size_t q, double omega, double u) noexcept {
+    if (omega > majorant_[q]) {
+      majorant_[q] = omega;
+      ++tally_[q].majorant_updates;
       return true;
     }
-    return !(u * majorant[q] > omega);
-  };
-  // The collision of candidate b of batch d along sigma-hat (000 sec. 3, step 3; eqs. 14-15).
-  auto collide = [&](const Drawn& d, std::uint64_t b, Vec3 vk, Vec3 vl, const Vec3& sigma, double g_sigma) {
+    return !(u * majorant_[q] > omega);
+  }
+
+  /// The collision of candidate b of batch d along sigma-hat (000 sec. 3, step 3; eqs. 14-15).
+  void apply(const Drawn& d, std::uint64_t b, Vec3 vk, Vec3 vl, const Vec3& sigma, double g_sigma) noexcept {
     const std::size_t q = one_pair ? 0 : d.qs[b];
-    const PairCoefficients& p = one_pair ? only_pair : pairs[q];
+    const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
     inelastic_collision(vk, vl, sigma, g_sigma, p);
     d.pk[b].set_velocity(vk);
     d.pl[b].set_velocity(vl);
-    ++tally[q].collisions;
-    tally[q].twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
+    ++tally_[q].collisions;
+    tally_[q].twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
     if constexpr (Shift::active) {  // collide/enskog_shear_shift.hpp
       const double impulse = p.one_plus_alpha * p.reduced_mass * g_sigma;
-      tally[q].twice_energy_shear_work -= 2.0 * impulse * p.diameter * shift.rate * sigma.x * sigma.y;
-      tally[q].transfer += weighted_dyad(impulse * p.diameter, sigma);
+      tally_[q].twice_energy_shear_work -= 2.0 * impulse * p.diameter * shift_.rate * sigma.x * sigma.y;
+      tally_[q].transfer += weighted_dyad(impulse * p.diameter, sigma);
     }
-  };
-  // Candidate b of batch d in full: the acceptance, then the collision. Its direction n is (nx, ny, nz)[e].
-  auto test_and_collide = [&](const Drawn& d, std::uint64_t b, const Lanes& nx, const Lanes& ny, const Lanes& nz,
-                              std::size_t e) {
+  }
+
+  /// Candidate b of batch d in full: the acceptance, then the collision. Its direction n is (nx, ny, nz)[e].
+  void test_and_apply(const Drawn& d, std::uint64_t b, const Lanes& nx, const Lanes& ny, const Lanes& nz,
+                      std::size_t e) noexcept {
     const std::size_t q = one_pair ? 0 : d.qs[b];
-    const PairCoefficients& p = one_pair ? only_pair : pairs[q];
+    const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
     const Vec3 vk = d.pk[b].velocity();
     const Vec3 vl = d.pl[b].velocity();
     // n, uniform on the sphere, is read where it is used: read before the acceptance it
@@ -243,55 +297,46 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
     double g_sigma;
     if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
       sigma = {nx[e], ny[e], nz[e]};
-      const Vec3 g = shift.relative_velocity(vk, vl, sigma, p);
+      const Vec3 g = shift_.relative_velocity(vk, vl, sigma, p);
       g_sigma = dot(g, sigma);
       if (g_sigma <= 0.0) return;  // Theta(g.sigma): the pair is separating along sigma-hat
-      if (!accepted(q, p.rate_prefactor * kernel.rate(g_sigma, norm2(g)), d.accept[b])) return;
+      if (!accepted(q, p.rate_prefactor * kernel_.rate(g_sigma, norm2(g)), d.accept[b])) return;
     } else {  // the mean over sigma-hat first, then sigma-hat given the collision
       const Vec3 g = vk - vl;
       const double g2 = norm2(g);
       // Maxwell: omega = omega_max (majorant_bound), so every candidate passes the test (u < 1).
-      if (!accepted(q, p.rate_prefactor * kernel.mean_rate(g2), d.accept[b])) return;
+      if (!accepted(q, p.rate_prefactor * kernel_.mean_rate(g2), d.accept[b])) return;
       const ImpactDirection id = impact_direction(g, std::sqrt(g2), {nx[e], ny[e], nz[e]});
       if (!(id.g_sigma > 0.0)) return;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
       sigma = id.sigma;
       g_sigma = id.g_sigma;
     }
-    collide(d, b, vk, vl, sigma, g_sigma);
-  };
-  // The screen (a kernel whose rate varies): before batch d's candidates act, all of them are tested at
-  // once on the velocities as they are then, and only those it cannot reject go through
-  // test_and_collide, in order. A candidate is left out only if it is rejected with certainty,
-  // u omega_max > omega_hi, and neither of its particles belongs to an earlier candidate of the batch
-  // (whose collision could have changed it). omega_hi is an upper bound of the omega test_and_collide
-  // computes: with the acceptance on the mean omega (1 + rounding_margin), omega computed in SIMD (a few
-  // ulp from the scalar omega); with the Enskog shift (hard spheres, omega = prefactor g.sigma, zero
-  // when g.sigma <= 0) prefactor (g.sigma + rounding_margin sum_c |g_c sigma_c|) (1 + rounding_margin),
-  // which covers another rounding of the dot product. omega_max only grows within a batch, which keeps a
-  // rejection a rejection. So every candidate does what it did in sequence, the same bits
-  // (tests/test_collision_stage.cpp), and the branches on the acceptance (and on the sign of g.sigma),
-  // taken at random and mispredicted, are gone.
-  // `seen` finds the particles of earlier candidates: a table of batch stamps indexed by record address
-  // (two particles can share a slot: a needless full test, never a missed one).
-  static_assert(!screened || batch <= 64, "the screen keeps a batch's outcomes in one 64-bit mask");
-  constexpr std::size_t slots_log2 = 14;
-  std::array<std::uint8_t, screened ? std::size_t{1} << slots_log2 : 1> seen{};
-  std::uint8_t stamp = 0;
-  auto slot = [](const typename Store::Particle& p) {
-    return (reinterpret_cast<std::uintptr_t>(p.address()) >> 4) & ((std::uintptr_t{1} << slots_log2) - 1);
-  };
-  Lanes g2{}, threshold{}, prefactor{}, omega{};  // initialised: lanes past a partial batch
-  // Bit b set: candidate b of the batch screened last shares a particle (or a slot of `seen`) with an
-  // earlier candidate of its batch.
-  std::uint64_t shared = 0;
-  // Bit b set: candidate b of d needs test_and_collide. Candidate b prefetches candidate b of the next
-  // batch (m_next of them), as the loop below does without the screen.
-  auto screen = [&](const Drawn& d, std::uint64_t m, const Drawn& next, std::uint64_t m_next) {
-    if (++stamp == 0) {  // 255 batches since the table was cleared
-      seen.fill(0);
-      stamp = 1;
+    apply(d, b, vk, vl, sigma, g_sigma);
+  }
+
+  /// The screen (a kernel whose rate varies): before batch d's candidates act, all of them are tested at
+  /// once on the velocities as they are then, and only those it cannot reject go through
+  /// test_and_apply, in order. A candidate is left out only if it is rejected with certainty,
+  /// u omega_max > omega_hi, and neither of its particles belongs to an earlier candidate of the batch
+  /// (whose collision could have changed it). omega_hi is an upper bound of the omega test_and_apply
+  /// computes: with the acceptance on the mean omega (1 + rounding_margin), omega computed in SIMD (a few
+  /// ulp from the scalar omega); with the Enskog shift (hard spheres, omega = prefactor g.sigma, zero
+  /// when g.sigma <= 0) prefactor (g.sigma + rounding_margin sum_c |g_c sigma_c|) (1 + rounding_margin),
+  /// which covers another rounding of the dot product. omega_max only grows within a batch, which keeps a
+  /// rejection a rejection. So every candidate does what it did in sequence, the same bits
+  /// (tests/test_collision_stage.cpp), and the branches on the acceptance (and on the sign of g.sigma),
+  /// taken at random and mispredicted, are gone.
+  /// `seen_` finds the particles of earlier candidates: a table of batch stamps indexed by record address
+  /// (two particles can share a slot: a needless full test, never a missed one). Bit b of the result is set
+  /// when candidate b of d needs test_and_apply; bit b of shared_ when it shares a particle (or a slot of
+  /// `seen_`) with an earlier candidate of its batch. Candidate b prefetches candidate b of the next batch (m_next
+  /// of them), as run does without the screen.
+  std::uint64_t screen(const Drawn& d, std::uint64_t m, const Drawn& next, std::uint64_t m_next) noexcept {
+    if (++stamp_ == 0) {  // 255 batches since the table was cleared
+      seen_.fill(0);
+      stamp_ = 1;
     }
-    shared = 0;
+    shared_ = 0;
     std::uint64_t full_test = 0;
     if constexpr (screened) {  // else not called, and kernel.mean_rate need not take a batch
       for (std::uint64_t b = 0; b < m; ++b) {
@@ -300,118 +345,119 @@ void collide_batches(BasicGasState<Real>& state, std::span<const PairCoefficient
           next.pl[b].prefetch();
         }
         const std::size_t q = one_pair ? 0 : d.qs[b];
-        const PairCoefficients& p = one_pair ? only_pair : pairs[q];
-        if constexpr (!one_pair) threshold[b] = d.accept[b] * majorant[q];
+        const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
+        if constexpr (!one_pair) threshold_[b] = d.accept[b] * majorant_[q];
         if constexpr (Shift::active) {
           static_assert(std::is_same_v<Kernel, HardSphere>,
                         "the Enskog shift runs with hard spheres (setup/run_plan.hpp)");
           const Vec3 sigma{d.sx[b], d.sy[b], d.sz[b]};
-          const Vec3 g = shift.relative_velocity(d.pk[b].velocity(), d.pl[b].velocity(), sigma, p);
+          const Vec3 g = shift_.relative_velocity(d.pk[b].velocity(), d.pl[b].velocity(), sigma, p);
           const double terms = std::abs(g.x * sigma.x) + std::abs(g.y * sigma.y) + std::abs(g.z * sigma.z);
-          omega[b] = p.rate_prefactor * (dot(g, sigma) + rounding_margin * terms) * (1.0 + rounding_margin);
+          omega_[b] = p.rate_prefactor * (dot(g, sigma) + rounding_margin * terms) * (1.0 + rounding_margin);
         } else {
-          g2[b] = norm2(d.pk[b].velocity() - d.pl[b].velocity());
-          if constexpr (!one_pair) prefactor[b] = p.rate_prefactor;
+          g2_[b] = norm2(d.pk[b].velocity() - d.pl[b].velocity());
+          if constexpr (!one_pair) prefactor_[b] = p.rate_prefactor;
         }
         const std::size_t sk = slot(d.pk[b]), sl = slot(d.pl[b]);
-        shared |= static_cast<std::uint64_t>((seen[sk] == stamp) | (seen[sl] == stamp)) << b;
-        seen[sk] = stamp;
-        seen[sl] = stamp;
+        shared_ |= static_cast<std::uint64_t>((seen_[sk] == stamp_) | (seen_[sl] == stamp_)) << b;
+        seen_[sk] = stamp_;
+        seen_[sl] = stamp_;
       }
       // Threshold and omega_hi lane by lane, and the lanes not rejected with certainty as bits (one
       // pair: the threshold from the acceptance uniforms and the pair's majorant, here in SIMD).
       std::uint64_t passes = 0;
       for (std::size_t k = 0; k < lanes; k += SimdDouble::size) {
-        const SimdDouble thr = one_pair ? SimdDouble::load_unaligned(&d.accept[k]) * majorant[0]
-                                        : SimdDouble::load_unaligned(&threshold[k]);
+        const SimdDouble thr = one_pair ? SimdDouble::load_unaligned(&d.accept[k]) * majorant_[0]
+                                        : SimdDouble::load_unaligned(&threshold_[k]);
         SimdDouble om;
         if constexpr (Shift::active) {
-          om = SimdDouble::load_unaligned(&omega[k]);
+          om = SimdDouble::load_unaligned(&omega_[k]);
         } else {
           const SimdDouble pre =
-              one_pair ? SimdDouble(only_pair.rate_prefactor) : SimdDouble::load_unaligned(&prefactor[k]);
-          om = pre * kernel.mean_rate(SimdDouble::load_unaligned(&g2[k])) * (1.0 + rounding_margin);
+              one_pair ? SimdDouble(only_pair_.rate_prefactor) : SimdDouble::load_unaligned(&prefactor_[k]);
+          om = pre * kernel_.mean_rate(SimdDouble::load_unaligned(&g2_[k])) * (1.0 + rounding_margin);
         }
         passes |= not_greater_bits(thr, om) << k;
       }
-      full_test = shared | (passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1));
+      full_test = shared_ | (passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1));
     }
     return full_test;
-  };
-  // Two batches in flight: while the candidates of one collide, the next one is drawn, and candidate b of
-  // the current batch prefetches the records of candidate b of the next, a batch ahead of their use. The
-  // prefetches are spread over the batch: issued a batch's 128 at once, more than the core's outstanding
-  // misses, the last ones waited a memory latency (as in the event scheme, docs/performance.md).
-  std::array<Drawn, 2> drawn{};  // initialised: a last, partial batch converts all lanes
-  std::array<std::uint8_t, lanes> which;
-  Lanes nx, ny, nz;  // the directions n of the candidates that passed the screen
-  Lanes gx, gy, gz, g_square, sigma_x, sigma_y, sigma_z,
-      g_sigma;  // and, for those, g and |g|^2, then sigma-hat and g.sigma
-  if (total > 0) {
-    draw_batch(drawn[0], 0, std::min(batch, total));
-    for (std::uint64_t b = 0; b < std::min(batch, total); ++b) {
-      drawn[0].pk[b].prefetch();
-      drawn[0].pl[b].prefetch();
+  }
+
+  /// The candidates of d that passed the screen (`full_test`), in order, and their directions n. One that
+  /// shares no particle with an earlier candidate of the batch has, when its turn comes, the velocities the
+  /// screen read: its sigma-hat and g.sigma are computed here, before the batch collides, a register at a time
+  /// (the same bits as impact_direction, so the square roots and divisions of successive collisions no longer
+  /// wait on each other), and only its acceptance is left for its turn. Returns how many passed.
+  std::size_t impact_directions(const Drawn& d, std::uint64_t full_test) noexcept {
+    const std::size_t passed = selected_unit_vectors(full_test, d.dir1, d.dir2, which_, nx_, ny_, nz_);
+    for (std::size_t e = 0; e < passed; ++e) {
+      const Vec3 g = d.pk[which_[e]].velocity() - d.pl[which_[e]].velocity();
+      gx_[e] = g.x, gy_[e] = g.y, gz_[e] = g.z, g_square_[e] = g2_[which_[e]];
+    }
+    for (std::size_t e = passed; e % SimdDouble::size != 0; ++e)
+      gx_[e] = gy_[e] = gz_[e] = g_square_[e] = 1.0;  // unused
+    for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
+      const auto at = [e](const Lanes& a) { return SimdDouble::load_unaligned(&a[e]); };
+      SimdDouble x, y, z, gs;
+      impact_direction_components(at(gx_), at(gy_), at(gz_), sqrt(at(g_square_)), at(nx_), at(ny_), at(nz_), x, y, z,
+                                  gs);
+      x.store_unaligned(&sigma_x_[e]), y.store_unaligned(&sigma_y_[e]), z.store_unaligned(&sigma_z_[e]);
+      gs.store_unaligned(&g_sigma_[e]);
+    }
+    return passed;
+  }
+
+  /// The `passed` candidates of d that passed the screen, in order: those that share a particle with an
+  /// earlier candidate of the batch tested in full at their turn, the others accepted on the mean and
+  /// collided along the sigma-hat impact_directions computed.
+  void apply_screened(const Drawn& d, std::size_t passed) noexcept {
+    for (std::size_t e = 0; e < passed; ++e) {
+      const std::uint64_t b = which_[e];
+      if ((shared_ >> b) & 1u) {
+        test_and_apply(d, b, nx_, ny_, nz_, e);
+        continue;
+      }
+      const std::size_t q = one_pair ? 0 : d.qs[b];
+      const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
+      if (!accepted(q, p.rate_prefactor * kernel_.mean_rate(g2_[b]), d.accept[b])) continue;
+      if (!(g_sigma_[e] > 0.0)) continue;  // as in test_and_apply
+      apply(d, b, d.pk[b].velocity(), d.pl[b].velocity(), {sigma_x_[e], sigma_y_[e], sigma_z_[e]}, g_sigma_[e]);
     }
   }
-  for (std::uint64_t s0 = 0, current = 0; s0 < total; s0 += batch, current ^= 1) {
-    const std::uint64_t m = std::min(batch, total - s0);
-    const std::uint64_t m_next = s0 + m < total ? std::min(batch, total - s0 - m) : 0;
-    const Drawn& d = drawn[current];
-    Drawn& next = drawn[current ^ 1];
-    if (m_next > 0) draw_batch(next, s0 + m, m_next);
-    if constexpr (screened && Shift::active) {
-      for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1) {
-        const auto b = static_cast<std::uint64_t>(std::countr_zero(full_test));
-        test_and_collide(d, b, d.sx, d.sy, d.sz, b);
-      }
-    } else if constexpr (screened) {
-      // The candidates that passed the screen, in order, and their directions n. One that shares no
-      // particle with an earlier candidate of the batch has, when its turn comes, the velocities the screen
-      // read: its sigma-hat and g.sigma are computed before the batch collides, a register at a time (the
-      // same bits as impact_direction, so the square roots and divisions of successive collisions no
-      // longer wait on each other), and only its acceptance is left for its turn. The others are tested
-      // in full at their turn.
-      const std::size_t passed = selected_unit_vectors(screen(d, m, next, m_next), d.dir1, d.dir2, which, nx, ny, nz);
-      for (std::size_t e = 0; e < passed; ++e) {
-        const Vec3 g = d.pk[which[e]].velocity() - d.pl[which[e]].velocity();
-        gx[e] = g.x, gy[e] = g.y, gz[e] = g.z, g_square[e] = g2[which[e]];
-      }
-      for (std::size_t e = passed; e % SimdDouble::size != 0; ++e) gx[e] = gy[e] = gz[e] = g_square[e] = 1.0;  // unused
-      for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
-        const auto at = [e](const Lanes& a) { return SimdDouble::load_unaligned(&a[e]); };
-        SimdDouble x, y, z, gs;
-        impact_direction_components(at(gx), at(gy), at(gz), sqrt(at(g_square)), at(nx), at(ny), at(nz), x, y, z, gs);
-        x.store_unaligned(&sigma_x[e]), y.store_unaligned(&sigma_y[e]), z.store_unaligned(&sigma_z[e]);
-        gs.store_unaligned(&g_sigma[e]);
-      }
-      for (std::size_t e = 0; e < passed; ++e) {
-        const std::uint64_t b = which[e];
-        if ((shared >> b) & 1u) {
-          test_and_collide(d, b, nx, ny, nz, e);
-          continue;
-        }
-        const std::size_t q = one_pair ? 0 : d.qs[b];
-        const PairCoefficients& p = one_pair ? only_pair : pairs[q];
-        if (!accepted(q, p.rate_prefactor * kernel.mean_rate(g2[b]), d.accept[b])) continue;
-        if (!(g_sigma[e] > 0.0)) continue;  // as in test_and_collide
-        collide(d, b, d.pk[b].velocity(), d.pl[b].velocity(), {sigma_x[e], sigma_y[e], sigma_z[e]}, g_sigma[e]);
-      }
-    } else {
-      for (std::uint64_t b = 0; b < m; ++b) {
-        if (b < m_next) {
-          next.pk[b].prefetch();
-          next.pl[b].prefetch();
-        }
-        test_and_collide(d, b, d.sx, d.sy, d.sz, b);
-      }
-    }
+
+  static std::uintptr_t slot(const typename Store::Particle& p) noexcept {
+    return (reinterpret_cast<std::uintptr_t>(p.address()) >> 4) & ((std::uintptr_t{1} << slots_log2) - 1);
   }
-  for (std::size_t q = 0; q < n_pairs; ++q) {
-    omega_max[q] = majorant[q];
-    tallies[q] = tally[q];
-  }
-}
+
+  std::span<const PairCoefficients> pairs_;
+  const RandomStream& rng_;
+  const Kernel& kernel_;
+  const Shift& shift_;
+  const std::size_t n_pairs_;
+  const PairCoefficients only_pair_;
+  std::uint64_t total_ = 0;
+  std::int64_t cumulative_[max_pairs - 1];
+  double majorant_[slots];
+  CollisionTally tally_[slots];
+  Store* store_k_[max_pairs];
+  Store* store_l_[max_pairs];
+  std::uint64_t range_k_[max_pairs], range_l_[max_pairs];
+  bool same_species_[max_pairs];
+  bool narrow_ = true;
+  std::array<std::uint64_t, 2 * batch> steps_, index_;
+  std::array<std::uint32_t, batch> ranges_k_{}, ranges_l_{};
+  std::array<std::uint64_t, batch> ks_, ls_;
+  std::array<std::uint8_t, screened ? std::size_t{1} << slots_log2 : 1> seen_{};
+  std::uint8_t stamp_ = 0;
+  Lanes g2_{}, threshold_{}, prefactor_{}, omega_{};  // initialised: lanes past a partial batch
+  std::uint64_t shared_ = 0;
+  std::array<Drawn, 2> drawn_{};  // initialised: a last, partial batch converts all lanes
+  std::array<std::uint8_t, lanes> which_;
+  Lanes nx_, ny_, nz_;  // the directions n of the candidates that passed the screen
+  Lanes gx_, gy_, gz_, g_square_, sigma_x_, sigma_y_, sigma_z_,
+      g_sigma_;  // and, for those, g and |g|^2, then sigma-hat and g.sigma
+};
 
 }  // namespace detail
 
@@ -431,12 +477,17 @@ template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift
 void collide_step(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                   std::span<const std::uint64_t> candidates, const RandomStream& rng, std::span<CollisionTally> tallies,
                   const Kernel& kernel = {}, const Shift& shift = {}) noexcept {
-  if (pairs.size() == 1)
-    detail::collide_batches<Kernel, Shift, true, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel,
-                                                        shift);
-  else
-    detail::collide_batches<Kernel, Shift, false, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel,
-                                                         shift);
+  if (pairs.size() == 1) {
+    detail::BatchedStage<Kernel, Shift, true, batch, Real> stage(state, pairs, omega_max, candidates, rng, tallies,
+                                                                 kernel, shift);
+    stage.run();
+    stage.finish(omega_max, tallies);
+  } else {
+    detail::BatchedStage<Kernel, Shift, false, batch, Real> stage(state, pairs, omega_max, candidates, rng, tallies,
+                                                                  kernel, shift);
+    stage.run();
+    stage.finish(omega_max, tallies);
+  }
 }
 
 }  // namespace granmc
