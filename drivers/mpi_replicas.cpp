@@ -18,106 +18,62 @@ MPI_Comm run_comm() { return run_communicator; }
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_trivially_copyable_v<Vec3>);
 static_assert(sizeof(SymTensor) == 6 * sizeof(double) && std::is_trivially_copyable_v<SymTensor>);
-#if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
-// Tripwire: a field added to these structs (kernel/observe/gas_series.hpp) must be added to the field lists
-// below (and to the round trip in tests/test_mpi.cpp); then update the sizes.
-static_assert(sizeof(SpeciesSeries) == 120, "SpeciesSeries changed: serialise the new field");
-static_assert(sizeof(IntruderSeries) == 144, "IntruderSeries changed: serialise the new field");
-static_assert(sizeof(ReplicaSeries) == 480, "ReplicaSeries changed: serialise the new field");
-#endif
-
-// One list of the fields of each series, in message order, serves both directions: `io` is Put (writes the
-// field) or Get (reads into it), so writing and reading cannot disagree. Optionals go as a flag byte and,
-// for the intruder, the series when present; the energy residual always sends its value (0 when absent).
-template <class Io, class S>
-void species_fields(Io& io, S& s) {
-  io(s.temperature);
-  io(s.log_temperature);
-  io(s.a2);
-  io(s.a3);
-  io(s.speed_counts);
-}
-
-template <class Io, class S>
-void intruder_fields(Io& io, S& s) {
-  io(s.velocity);
-  io(s.speed_counts);
-  io(s.sampling_attempts);
-  io(s.velocity_y);
-  io(s.angular_velocity);
-  io(s.angular_counts);
-  io(s.newton_iterations);
-  io(s.bisection_fallbacks);
-}
-
-template <class Io, class S>
-void replica_fields(Io& io, S& s) {
-  io(s.temperature);
-  io(s.log_temperature);
-  io(s.species);
-  io(s.momentum);
-  io(s.momentum_relative);
-  io(s.collisions);
-  io(s.pair_collisions);
-  io(s.histogram_samples);
-  io(s.candidates);
-  io(s.majorant_updates);
-  io(s.majorant_violations);
-  io(s.majorant_growth);
-  io(s.pressure_kinetic);
-  io(s.pressure_collisional);
-  io(s.reduced_shear_rate);
-  io(s.rescales);
-  io(s.momentum_removed_relative);
-  io(s.energy_residual);
-  io(s.intruder);
-}
-
+// The fields of a replica in message order are kernel/observe/gas_series.hpp's one list (visit_replica_fields),
+// walked by Put (writes each field) and Get (reads into it), so writing and reading cannot disagree. Optionals
+// go as a flag byte and, for a record, its fields when present; the energy residual always sends its value (0
+// when absent).
 struct Put {
   ByteWriter& out;
   template <class T>
-  void operator()(const T& v) {
+  void operator()(const char*, const T& v) {
     out.value(v);
   }
   template <class T>
-  void operator()(const std::vector<T>& v) {
+  void operator()(const char*, const std::vector<T>& v) {
     out.array(v);
   }
-  void operator()(const std::vector<SpeciesSeries>& species) {
+  void operator()(const char*, const std::vector<SpeciesSeries>& species) {
     out.value(static_cast<std::uint64_t>(species.size()));
-    for (const SpeciesSeries& sp : species) species_fields(*this, sp);
+    for (const SpeciesSeries& sp : species) visit_species_fields(sp, *this);
   }
-  void operator()(const std::optional<double>& v) {
+  void operator()(const char*, const std::optional<double>& v) {
     out.value(static_cast<std::uint8_t>(v.has_value()));
     out.value(v.value_or(0.0));
   }
-  void operator()(const std::optional<IntruderSeries>& v) {
+  void operator()(const char*, const std::optional<ShearSeries>& v) {
     out.value(static_cast<std::uint8_t>(v.has_value()));
-    if (v) intruder_fields(*this, *v);
+    if (v) visit_shear_fields(*v, *this);
+  }
+  void operator()(const char*, const std::optional<IntruderSeries>& v) {
+    out.value(static_cast<std::uint8_t>(v.has_value()));
+    if (v) visit_intruder_fields(*v, *this);
   }
 };
 
 struct Get {
   ByteReader& in;
   template <class T>
-  void operator()(T& v) {
+  void operator()(const char*, T& v) {
     v = in.value<T>();
   }
   template <class T>
-  void operator()(std::vector<T>& v) {
+  void operator()(const char*, std::vector<T>& v) {
     v = in.array<T>();
   }
-  void operator()(std::vector<SpeciesSeries>& species) {
+  void operator()(const char*, std::vector<SpeciesSeries>& species) {
     const auto n = in.value<std::uint64_t>();  // one at a time: a corrupt count fails at the end of the bytes
-    for (std::uint64_t i = 0; i < n; ++i) species_fields(*this, species.emplace_back());
+    for (std::uint64_t i = 0; i < n; ++i) visit_species_fields(species.emplace_back(), *this);
   }
-  void operator()(std::optional<double>& v) {
-    const bool present = flag("energy residual");
+  void operator()(const char* name, std::optional<double>& v) {
+    const bool present = flag(name);
     const double value = in.value<double>();
     if (present) v = value;
   }
-  void operator()(std::optional<IntruderSeries>& v) {
-    if (flag("intruder")) intruder_fields(*this, v.emplace());
+  void operator()(const char* name, std::optional<ShearSeries>& v) {
+    if (flag(name)) visit_shear_fields(v.emplace(), *this);
+  }
+  void operator()(const char* name, std::optional<IntruderSeries>& v) {
+    if (flag(name)) visit_intruder_fields(v.emplace(), *this);
   }
   bool flag(const char* what) {
     const auto f = in.value<std::uint8_t>();
@@ -144,13 +100,13 @@ constexpr int tag_replicas = 1;
 
 void write_replica(ByteWriter& out, const ReplicaSeries& s) {
   Put put{out};
-  replica_fields(put, s);
+  visit_replica_fields(s, put);
 }
 
 ReplicaSeries read_replica(ByteReader& in) {
   ReplicaSeries s;
   Get get{in};
-  replica_fields(get, s);
+  visit_replica_fields(s, get);
   return s;
 }
 

@@ -451,7 +451,7 @@ std::vector<OutputRecord> declare() {
           if (!viscosity(o)) return {};
           ReplicaRows<double> out;
           for (const ReplicaSeries& s : o.result.replicas)
-            for (const SymTensor& t : kinetic ? s.pressure_kinetic : s.pressure_collisional)
+            for (const SymTensor& t : kinetic ? s.shear->pressure_kinetic : s.shear->pressure_collisional)
               out.values.insert(out.values.end(), {t.xx, t.yy, t.zz, t.xy, t.xz, t.yz});
           out.dims = {o.result.replicas.size(), o.result.times.size(), 6};
           return out;

@@ -439,6 +439,9 @@ class Reader {
 
   void read_run(const Section& s, RunConfig& run) const;
   void read_species(const toml::table& root, Scene& scene) const;
+  const toml::array* species_tables(const toml::table& root, const Scene& scene) const;
+  void read_one_species(const toml::node& el, std::size_t i, Scene& scene) const;
+  void check_particle_ratio(const Scene& scene) const;
   void read_collision(const Section& s, Scene& scene) const;
   void read_thermostat(const Section& s, ThermostatConfig& th) const;
   void read_intruder(const Section& s, IntruderConfig& in) const;
@@ -503,7 +506,9 @@ void Reader::read_run(const Section& s, RunConfig& run) const {
   }
 }
 
-void Reader::read_species(const toml::table& root, Scene& scene) const {
+/// The [[species]] array the method needs, or nothing for an intruder scene; fails when the tables do not go
+/// with the method.
+const toml::array* Reader::species_tables(const toml::table& root, const Scene& scene) const {
   const toml::node* node = root.get("species");
   const std::string method = quote_str(method_name(scene.run.method));
   const toml::array* arr = nullptr;
@@ -526,7 +531,7 @@ void Reader::read_species(const toml::table& root, Scene& scene) const {
            "and has no [[species]]");
     }
     if (!has_intruder) fail("intruder", "missing required table for method \"gillespie\"; add an [intruder] table");
-    return;
+    return nullptr;
   }
   if (has_intruder && scene.run.method == Method::event) {
     fail("intruder",
@@ -539,7 +544,7 @@ void Reader::read_species(const toml::table& root, Scene& scene) const {
          "\"dsmc\" and \"event\") or an intruder in a bath ([intruder], methods \"gillespie\" and "
          "\"dsmc\"), not both");
   }
-  if (has_intruder) return;  // intruder DSMC alternative
+  if (has_intruder) return nullptr;  // intruder DSMC alternative
   if (!node) {
     fail("species", "missing required [[species]] table for method " + method + "; add one or two [[species]] tables" +
                         (scene.run.method == Method::dsmc ? " (or an [intruder] table for an intruder scene)" : ""));
@@ -550,57 +555,67 @@ void Reader::read_species(const toml::table& root, Scene& scene) const {
          std::to_string(arr->size()) + " species given; at most 2 are supported (1 or 2 [[species]] tables)");
   }
 
-  for (std::size_t i = 0; i < arr->size(); ++i) {
-    const std::string idx = "species[" + std::to_string(i) + "]";
-    const toml::node& el = *arr->get(i);
-    if (!el.is_table()) wrong_type(idx, el, "a table ([[species]])");
-    const Section s{el.as_table(), idx + ".", "[[species]]"};
-    check_keys(s);
-    SpeciesConfig sp;
-    sp.name = std::string(1, static_cast<char>('a' + i));
-    if (const auto name = string(s, "name", "a non-empty string")) {
-      if (name->find_first_not_of(" \t") == std::string::npos)
-        fail(s.key("name"), "empty name; expected a non-empty string");
-      for (const char c : *name) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f || c == '/')
-          fail(s.key("name"),
-               quote_str(*name) + " contains '/' or a control character; expected a plain name such as \"a\"");
-      }
-      sp.name = *name;
-    }
-    if (const auto m = number(s, "mass", "a finite number > 0")) sp.mass = positive(s.key("mass"), *m);
-    if (const auto d = number(s, "diameter", "a finite number > 0")) sp.diameter = positive(s.key("diameter"), *d);
-    if (const auto n = number(s, "density", "a finite number > 0")) sp.density = positive(s.key("density"), *n);
-    const auto np = integer(s, "particles", "an integer >= 1");
-    if (!np) fail(s.key("particles"), "missing required key; set the number of simulated particles N_i >= 1");
-    if (*np < 1) fail(s.key("particles"), fmt(*np) + " is not > 0; expected an integer >= 1");
-    sp.particles = *np;
-    for (std::size_t j = 0; j < scene.species.size(); ++j) {
-      if (scene.species[j].name == sp.name) {
-        fail(s.key("name"), quote_str(sp.name) + " is already the name of species[" + std::to_string(j) +
-                                "]; species names must be unique" +
-                                (s.has("name") ? "" : " (default names are \"a\", \"b\" by index)"));
-      }
-    }
-    scene.species.push_back(std::move(sp));
-  }
+  return arr;
+}
 
-  if (scene.species.size() == 2) {  // N_0/N_1 must equal n_0/n_1 to 1 %
-    const auto& a = scene.species[0];
-    const auto& b = scene.species[1];
-    const double ratio_N = static_cast<double>(a.particles) / static_cast<double>(b.particles);
-    const double ratio_n = a.density / b.density;
-    if (!(std::abs(ratio_N / ratio_n - 1.0) <= 0.01 + 1e-12)) {
-      const double want = static_cast<double>(a.particles) * b.density / a.density;
-      std::string hint;
-      if (want >= 1 && want < 9e18)
-        hint = ", e.g. species[1].particles = " + fmt(static_cast<std::int64_t>(std::llround(want)));
-      fail("species[1].particles",
-           "the particle ratio N_0/N_1 = " + fmt(a.particles) + "/" + fmt(b.particles) + " = " + fmt_short(ratio_N) +
-               " differs from the density ratio n_0/n_1 = " + fmt(a.density) + "/" + fmt(b.density) + " = " +
-               fmt_short(ratio_n) + " by more than 1%; choose particles with N_0/N_1 = n_0/n_1" + hint);
+void Reader::read_species(const toml::table& root, Scene& scene) const {
+  const toml::array* arr = species_tables(root, scene);
+  if (!arr) return;
+  for (std::size_t i = 0; i < arr->size(); ++i) read_one_species(*arr->get(i), i, scene);
+  if (scene.species.size() == 2) check_particle_ratio(scene);
+}
+
+/// species[i] from its table, appended to scene.species.
+void Reader::read_one_species(const toml::node& el, std::size_t i, Scene& scene) const {
+  const std::string idx = "species[" + std::to_string(i) + "]";
+  if (!el.is_table()) wrong_type(idx, el, "a table ([[species]])");
+  const Section s{el.as_table(), idx + ".", "[[species]]"};
+  check_keys(s);
+  SpeciesConfig sp;
+  sp.name = std::string(1, static_cast<char>('a' + i));
+  if (const auto name = string(s, "name", "a non-empty string")) {
+    if (name->find_first_not_of(" \t") == std::string::npos)
+      fail(s.key("name"), "empty name; expected a non-empty string");
+    for (const char c : *name) {
+      const auto u = static_cast<unsigned char>(c);
+      if (u < 0x20 || u == 0x7f || c == '/')
+        fail(s.key("name"),
+             quote_str(*name) + " contains '/' or a control character; expected a plain name such as \"a\"");
     }
+    sp.name = *name;
+  }
+  if (const auto m = number(s, "mass", "a finite number > 0")) sp.mass = positive(s.key("mass"), *m);
+  if (const auto d = number(s, "diameter", "a finite number > 0")) sp.diameter = positive(s.key("diameter"), *d);
+  if (const auto n = number(s, "density", "a finite number > 0")) sp.density = positive(s.key("density"), *n);
+  const auto np = integer(s, "particles", "an integer >= 1");
+  if (!np) fail(s.key("particles"), "missing required key; set the number of simulated particles N_i >= 1");
+  if (*np < 1) fail(s.key("particles"), fmt(*np) + " is not > 0; expected an integer >= 1");
+  sp.particles = *np;
+  for (std::size_t j = 0; j < scene.species.size(); ++j) {
+    if (scene.species[j].name == sp.name) {
+      fail(s.key("name"), quote_str(sp.name) + " is already the name of species[" + std::to_string(j) +
+                              "]; species names must be unique" +
+                              (s.has("name") ? "" : " (default names are \"a\", \"b\" by index)"));
+    }
+  }
+  scene.species.push_back(std::move(sp));
+}
+
+/// N_0/N_1 must equal n_0/n_1 to 1 %.
+void Reader::check_particle_ratio(const Scene& scene) const {
+  const auto& a = scene.species[0];
+  const auto& b = scene.species[1];
+  const double ratio_N = static_cast<double>(a.particles) / static_cast<double>(b.particles);
+  const double ratio_n = a.density / b.density;
+  if (!(std::abs(ratio_N / ratio_n - 1.0) <= 0.01 + 1e-12)) {
+    const double want = static_cast<double>(a.particles) * b.density / a.density;
+    std::string hint;
+    if (want >= 1 && want < 9e18)
+      hint = ", e.g. species[1].particles = " + fmt(static_cast<std::int64_t>(std::llround(want)));
+    fail("species[1].particles",
+         "the particle ratio N_0/N_1 = " + fmt(a.particles) + "/" + fmt(b.particles) + " = " + fmt_short(ratio_N) +
+             " differs from the density ratio n_0/n_1 = " + fmt(a.density) + "/" + fmt(b.density) + " = " +
+             fmt_short(ratio_n) + " by more than 1%; choose particles with N_0/N_1 = n_0/n_1" + hint);
   }
 }
 

@@ -67,9 +67,12 @@ void expect_same(const ReplicaSeries& a, const ReplicaSeries& b) {
   EXPECT_EQ(a.majorant_updates, b.majorant_updates);
   EXPECT_EQ(a.majorant_violations, b.majorant_violations);
   EXPECT_TRUE(same_bytes(a.majorant_growth, b.majorant_growth));
-  EXPECT_TRUE(same_bytes(a.pressure_kinetic, b.pressure_kinetic));
-  EXPECT_TRUE(same_bytes(a.pressure_collisional, b.pressure_collisional));
-  EXPECT_TRUE(same_bytes(a.reduced_shear_rate, b.reduced_shear_rate));
+  ASSERT_EQ(a.shear.has_value(), b.shear.has_value());
+  if (a.shear) {
+    EXPECT_TRUE(same_bytes(a.shear->pressure_kinetic, b.shear->pressure_kinetic));
+    EXPECT_TRUE(same_bytes(a.shear->pressure_collisional, b.shear->pressure_collisional));
+    EXPECT_TRUE(same_bytes(a.shear->reduced_shear_rate, b.shear->reduced_shear_rate));
+  }
   EXPECT_EQ(a.rescales, b.rescales);
   EXPECT_TRUE(same_bytes(a.momentum_removed_relative, b.momentum_removed_relative));
   ASSERT_EQ(a.energy_residual.has_value(), b.energy_residual.has_value());
@@ -115,9 +118,9 @@ ReplicaSeries filled_replica(int r, bool intruder) {
   s.majorant_updates = 13;
   s.majorant_violations = 14;
   s.majorant_growth = doubles(4);
-  s.pressure_kinetic = {{1, 2, 3, 4, 5, 6.0 + r}, {-1, -2, -3, -4, -5, -6}};
-  s.pressure_collisional = {{0.1, 0.2, 0.3, 0.4, 0.5, 0.6}, {}};
-  s.reduced_shear_rate = doubles(2);
+  if (!intruder)
+    s.shear = ShearSeries{
+        {{1, 2, 3, 4, 5, 6.0 + r}, {-1, -2, -3, -4, -5, -6}}, {{0.1, 0.2, 0.3, 0.4, 0.5, 0.6}, {}}, doubles(2)};
   s.rescales = 15;
   s.momentum_removed_relative = 1e-300 * (r + 1);
   if (!intruder) s.energy_residual = 1e-15 * (r + 1);

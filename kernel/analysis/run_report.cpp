@@ -31,10 +31,12 @@ void check_shapes(const RunResult& result) {
     } else {
       require_length(s.momentum.size(), samples, "momentum", r);
       require_length(s.momentum_relative.size(), samples, "momentum_relative", r);
-      if (!s.pressure_kinetic.empty() || !result.replicas.front().pressure_kinetic.empty()) {  // shear
-        require_length(s.pressure_kinetic.size(), samples, "pressure_kinetic", r);
-        require_length(s.pressure_collisional.size(), samples, "pressure_collisional", r);
-        require_length(s.reduced_shear_rate.size(), samples, "reduced_shear_rate", r);
+      if (s.shear.has_value() != result.replicas.front().shear.has_value())
+        throw std::invalid_argument("run result: replica " + std::to_string(r) + " differs from replica 0 in shear");
+      if (s.shear) {
+        require_length(s.shear->pressure_kinetic.size(), samples, "pressure_kinetic", r);
+        require_length(s.shear->pressure_collisional.size(), samples, "pressure_collisional", r);
+        require_length(s.shear->reduced_shear_rate.size(), samples, "reduced_shear_rate", r);
       }
     }
     require_length(s.collisions.size(), samples, "collisions", r);
@@ -119,7 +121,7 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
     });
   report.theory = theory::cooling_state(scene, result.times);
   if (scene.intruder && result.replicas.front().intruder) report.intruder = intruder_report(scene, result);
-  if (!result.replicas.front().pressure_kinetic.empty()) report.viscosity = viscosity_report(scene, result);
+  if (result.replicas.front().shear) report.viscosity = viscosity_report(scene, result);
   return report;
 }
 

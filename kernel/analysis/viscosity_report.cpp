@@ -33,9 +33,9 @@ ViscosityReport viscosity_report(const Scene& scene, const RunResult& result) {
   for (const ReplicaSeries& s : result.replicas) {
     std::vector<double> p(samples), pk(samples), e(samples), ek(samples);
     for (std::size_t k = 0; k < samples; ++k) {
-      pk[k] = s.pressure_kinetic[k].xy;
-      p[k] = pk[k] + s.pressure_collisional[k].xy;
-      const double a_star = s.reduced_shear_rate[k];
+      pk[k] = s.shear->pressure_kinetic[k].xy;
+      p[k] = pk[k] + s.shear->pressure_collisional[k].xy;
+      const double a_star = s.shear->reduced_shear_rate[k];
       e[k] = k == 0 ? std::nan("") : -p[k] / a_star;  // no collisional average at t = 0
       ek[k] = -pk[k] / a_star;
     }
@@ -50,7 +50,7 @@ ViscosityReport viscosity_report(const Scene& scene, const RunResult& result) {
         replicas, samples, [&](std::size_t r) -> const auto& { return v[r]; });
   };
   out.reduced_shear_rate = per_time(
-      result, [](const ReplicaSeries& s) -> const auto& { return s.reduced_shear_rate; });
+      result, [](const ReplicaSeries& s) -> const auto& { return s.shear->reduced_shear_rate; });
   out.pressure_xy = rows(p_xy);
   out.pressure_kinetic_xy = rows(pk_xy);
   out.eta_star = rows(eta);

@@ -41,6 +41,14 @@ struct IntruderSeries {
   std::uint64_t bisection_fallbacks = 0;  // needle: bisection steps taken instead of a Newton step
 };
 
+/// What a sheared replica records (000 secs. 2-3; observe/pressure_tensor.hpp), each at every sample time.
+struct ShearSeries {
+  std::vector<SymTensor> pressure_kinetic;      // P^k / (n T) at the sample (000 eq. 17)
+  std::vector<SymTensor> pressure_collisional;  // P^c / (n T) averaged since the previous sample (eq. 18);
+                                                // zero at t = 0 and in the Boltzmann limit
+  std::vector<double> reduced_shear_rate;       // a* = a / nu, nu = sqrt(pi) n sigma_12^2 v_0 (000 Fig. 10)
+};
+
 /// The documented bound on ReplicaSeries::energy_residual (docs/physics.md, "Energy balance"). The suite
 /// measures 2e-16 to 1.3e-15; rounding that added up linearly (1e-16 per step) over the 10^5 steps of a long
 /// heated run, which never rescales, would reach 1e-11. An effect that does not report its energy change
@@ -63,20 +71,79 @@ struct ReplicaSeries {
   std::uint64_t majorant_violations = 0;       // event scheme: candidates whose relative speed exceeded the
                                                // U_max their waiting time was drawn with (schemes/event_scheme.hpp)
   std::vector<double> majorant_growth;         // per ordered pair: final / initial omega_max (stored units)
-  // Shear runs (000 secs. 2-3; observe/pressure_tensor.hpp), each at every sample time:
-  std::vector<SymTensor> pressure_kinetic;      // P^k / (n T) at the sample (000 eq. 17)
-  std::vector<SymTensor> pressure_collisional;  // P^c / (n T) averaged since the previous sample (eq. 18);
-                                                // zero at t = 0 and in the Boltzmann limit
-  std::vector<double> reduced_shear_rate;       // a* = a / nu, nu = sqrt(pi) n sigma_12^2 v_0 (000 Fig. 10)
-  std::uint64_t rescales = 0;                   // velocity rescalings (long cooling runs)
-  double momentum_removed_relative = 0.0;       // sum over rescalings of the removed |P| / sqrt(M 2 E)
+  std::uint64_t rescales = 0;                  // velocity rescalings (long cooling runs)
+  double momentum_removed_relative = 0.0;      // sum over rescalings of the removed |P| / sqrt(M 2 E)
   // Time-stepped gas (schemes/dsmc.hpp): the largest |E_tracked / E_summed - 1| over the sample times, where
   // E_tracked is the step's energy bookkeeping (start, minus collisional losses, plus each effect's returned
   // change) and E_summed = sum_i m_i sum_k |c_k|^2 summed afresh; closes to rounding when every effect
   // reports what it did (docs/physics.md, "Energy balance"). Empty for schemes that do not track energy.
   std::optional<double> energy_residual;
+  std::optional<ShearSeries> shear;        // uniform shear flow
   std::optional<IntruderSeries> intruder;  // method "gillespie"
 };
+
+// Every field of a replica's series, each under its name, in one order: the one list that packing a replica
+// for another process (drivers/mpi_replicas.cpp) walks, so that a field added to the structs above and not here
+// is caught by the sizes asserted below. visit(name, field) is called for each; an optional record is one
+// field (the visitor walks its fields with the visit_*_fields below).
+
+template <class S, class Visit>
+void visit_species_fields(S& s, Visit&& visit) {
+  visit("temperature", s.temperature);
+  visit("log_temperature", s.log_temperature);
+  visit("a2", s.a2);
+  visit("a3", s.a3);
+  visit("speed_counts", s.speed_counts);
+}
+
+template <class S, class Visit>
+void visit_shear_fields(S& s, Visit&& visit) {
+  visit("pressure_kinetic", s.pressure_kinetic);
+  visit("pressure_collisional", s.pressure_collisional);
+  visit("reduced_shear_rate", s.reduced_shear_rate);
+}
+
+template <class S, class Visit>
+void visit_intruder_fields(S& s, Visit&& visit) {
+  visit("velocity", s.velocity);
+  visit("speed_counts", s.speed_counts);
+  visit("sampling_attempts", s.sampling_attempts);
+  visit("velocity_y", s.velocity_y);
+  visit("angular_velocity", s.angular_velocity);
+  visit("angular_counts", s.angular_counts);
+  visit("newton_iterations", s.newton_iterations);
+  visit("bisection_fallbacks", s.bisection_fallbacks);
+}
+
+template <class S, class Visit>
+void visit_replica_fields(S& s, Visit&& visit) {
+  visit("temperature", s.temperature);
+  visit("log_temperature", s.log_temperature);
+  visit("species", s.species);
+  visit("momentum", s.momentum);
+  visit("momentum_relative", s.momentum_relative);
+  visit("collisions", s.collisions);
+  visit("pair_collisions", s.pair_collisions);
+  visit("histogram_samples", s.histogram_samples);
+  visit("candidates", s.candidates);
+  visit("majorant_updates", s.majorant_updates);
+  visit("majorant_violations", s.majorant_violations);
+  visit("majorant_growth", s.majorant_growth);
+  visit("rescales", s.rescales);
+  visit("momentum_removed_relative", s.momentum_removed_relative);
+  visit("energy_residual", s.energy_residual);
+  visit("shear", s.shear);
+  visit("intruder", s.intruder);
+}
+
+#if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
+// Tripwire: a field added to these structs must be added to the lists above (and to the round trip in
+// tests/test_mpi.cpp); then update the sizes.
+static_assert(sizeof(SpeciesSeries) == 120, "SpeciesSeries changed: add the new field to visit_species_fields");
+static_assert(sizeof(ShearSeries) == 72, "ShearSeries changed: add the new field to visit_shear_fields");
+static_assert(sizeof(IntruderSeries) == 144, "IntruderSeries changed: add the new field to visit_intruder_fields");
+static_assert(sizeof(ReplicaSeries) == 488, "ReplicaSeries changed: add the new field to visit_replica_fields");
+#endif
 
 struct RunResult {
   std::vector<double> times;  // sample times

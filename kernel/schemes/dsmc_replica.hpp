@@ -27,10 +27,11 @@ ReplicaSeries run_dsmc_replica(Sim& sim, const Scene& scene, const std::vector<d
     series.energy_residual = std::max(series.energy_residual.value_or(0.0),
                                       std::abs(sim.tracked_twice_energy() / summed.twice_energy - 1.0));
     if constexpr (Sim::sheared) {
-      series.pressure_kinetic.push_back(reduced_kinetic_pressure(scene, sim.state()));
-      series.pressure_collisional.push_back(sim.take_collisional_pressure());
-      series.reduced_shear_rate.push_back(scene.shear_rate /
-                                          effective_collision_frequency(scene, series.temperature.back()));
+      ShearSeries& shear = series.shear ? *series.shear : series.shear.emplace();
+      shear.pressure_kinetic.push_back(reduced_kinetic_pressure(scene, sim.state()));
+      shear.pressure_collisional.push_back(sim.take_collisional_pressure());
+      shear.reduced_shear_rate.push_back(scene.shear_rate /
+                                         effective_collision_frequency(scene, series.temperature.back()));
     }
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
     if (on_sample) on_sample();

@@ -213,13 +213,11 @@ class RankWaveBackend {
     return m;
   }
 
-  /// Candidates [first, first + m) of the step: drawn, given their owners and waves (the same on every rank),
-  /// then done wave by wave. Adds their energy losses to `loss_sum` in list order (as the one-process stage
-  /// sums them); returns the number of waves.
-  template <class Kernel, class Store>
-  std::uint32_t collide_segment(Store& store, std::uint64_t step, const RandomStream& rng, const Kernel& kernel,
-                                const PairCoefficients& pair, double omega_max, std::size_t first, std::size_t m,
-                                double& loss_sum, double (&counts)[2], double& above) {
+  /// Candidates [first, first + m) of the step drawn (the same words on every rank), given their owners and
+  /// waves, and those that touch this rank's particles put in queue_ in wave order (list order within a wave).
+  /// Returns where each wave w = 1..W starts in queue_ (start[W + 1] is its end), W + 2 values.
+  std::vector<std::size_t> order_into_waves(std::uint64_t step, const RandomStream& rng, std::size_t first,
+                                            std::size_t m) {
     k_.resize(m);
     l_.resize(m);
     rk_.resize(m);
@@ -262,6 +260,18 @@ class RankWaveBackend {
     for (std::size_t j = 0; j < m; ++j)
       if (here(j)) queue_[start[wave_[j]]++] = {k_[j], l_[j], rk_[j], rl_[j], j};
     for (std::uint32_t w = waves; w >= 1; --w) start[w] = start[w - 1];  // back to the first of each wave
+    return start;
+  }
+
+  /// Candidates [first, first + m) of the step: drawn, given their owners and waves (the same on every rank),
+  /// then done wave by wave. Adds their energy losses to `loss_sum` in list order (as the one-process stage
+  /// sums them); returns the number of waves.
+  template <class Kernel, class Store>
+  std::uint32_t collide_segment(Store& store, std::uint64_t step, const RandomStream& rng, const Kernel& kernel,
+                                const PairCoefficients& pair, double omega_max, std::size_t first, std::size_t m,
+                                double& loss_sum, double (&counts)[2], double& above) {
+    const std::vector<std::size_t> start = order_into_waves(step, rng, first, m);
+    const auto waves = static_cast<std::uint32_t>(start.size() - 2);
 
     std::vector<double> loss(m, 0.0);  // 2 (energy loss) of each candidate, filled by the owner of k
     const int me = me_;
