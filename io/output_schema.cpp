@@ -44,6 +44,23 @@ ReplicaRows<T> per_replica(const RunResult& result, Pick pick) {
 
 bool gas(const RunOutput& o) { return !o.report.momentum_relative.mean.empty(); }
 
+/// The optional parts of the report a record can belong to (nothing when the run has no such part).
+const IntruderReport* intruder(const RunOutput& o) { return o.report.intruder ? &*o.report.intruder : nullptr; }
+const NeedleReport* needle(const RunOutput& o) {
+  return o.report.intruder && o.report.intruder->needle ? &*o.report.intruder->needle : nullptr;
+}
+const ViscosityReport* viscosity(const RunOutput& o) { return o.report.viscosity ? &*o.report.viscosity : nullptr; }
+
+/// The accessor of `member` of the part `part` gives, or of nothing when the run has no such part.
+template <class Part, class T>
+std::function<Value(const RunOutput&, std::size_t)> member_of(const Part* (*part)(const RunOutput&), T Part::*member) {
+  return [part, member](const RunOutput& o, std::size_t) -> Value {
+    const Part* p = part(o);
+    if (p == nullptr) return {};
+    return p->*member;
+  };
+}
+
 std::vector<OutputRecord> declare() {
   std::vector<OutputRecord> r;
   auto add = [&](std::string path, RecordKind kind, bool summary, std::string units, std::string meaning,
@@ -267,12 +284,8 @@ std::vector<OutputRecord> declare() {
       });
 
   // The intruder (002).
-  auto intruder = [](const RunOutput& o) { return o.report.intruder ? &*o.report.intruder : nullptr; };
-  auto needle = [](const RunOutput& o) {
-    return o.report.intruder && o.report.intruder->needle ? &*o.report.intruder->needle : nullptr;
-  };
   add("intruder", K::group, H, "", "the Gillespie intruder or needle (002) in its bath",
-      [intruder](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!intruder(o)) return {};
         return std::monostate{};
       });
@@ -280,47 +293,32 @@ std::vector<OutputRecord> declare() {
       "T/T_B over the last half of the samples, T = M <v1^2> per degree of freedom (the needle's translational "
       "temperature): per-replica time average, then " +
           std::string(ci_text),
-      [intruder](const RunOutput& o, std::size_t) -> Value {
-        if (!intruder(o)) return {};
-        return intruder(o)->temperature_ratio;
-      });
+      member_of(intruder, &IntruderReport::temperature_ratio));
   add("intruder/bath_temperature", K::number, S, "energy", "T_B = m <v^2> of the bath (m = 1)",
-      [intruder](const RunOutput& o, std::size_t) -> Value {
-        if (!intruder(o)) return {};
-        return intruder(o)->bath_temperature;
-      });
+      member_of(intruder, &IntruderReport::bath_temperature));
   add("intruder/events", K::count, S, "", "collisions of the intruder, all replicas",
-      [intruder](const RunOutput& o, std::size_t) -> Value {
-        if (!intruder(o)) return {};
-        return intruder(o)->events;
-      });
+      member_of(intruder, &IntruderReport::events));
   add("intruder/temperature_ratio_exact", K::number, S, "",
       "exact stationary T/T_B where it is known (002 eq. 22; alpha for the power law with M = alpha)",
-      [intruder](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!intruder(o) || !intruder(o)->temperature_ratio_exact) return {};
         return *intruder(o)->temperature_ratio_exact;
       });
   add("intruder/speed_shell_edges", K::numbers, S, "velocity", "edges of the |v1| shells",
-      [intruder](const RunOutput& o, std::size_t) -> Value {
-        if (!intruder(o)) return {};
-        return intruder(o)->speed_shell_edges;
-      });
+      member_of(intruder, &IntruderReport::speed_shell_edges));
   add("intruder/speed_distribution", K::series, S, "1/velocity",
       "density of |v1| per unit speed over the last half of the samples, per shell; " + std::string(ci_text),
-      [intruder](const RunOutput& o, std::size_t) -> Value {
-        if (!intruder(o)) return {};
-        return intruder(o)->speed_distribution;
-      });
+      member_of(intruder, &IntruderReport::speed_distribution));
   add("intruder/speed_distribution/counts", K::rows, H, "",
       "samples of |v1| counted in each shell (columns), per replica (rows)",
-      [intruder](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!intruder(o)) return {};
         return rows(
             o.result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->speed_counts; });
       });
   add("intruder/velocity", K::rows, H, "velocity",
       "intruder velocity v1 (the needle's v1_x) of each replica (rows) at each sample (columns)",
-      [intruder](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!intruder(o)) return {};
         return rows(
             o.result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->velocity; });
@@ -328,72 +326,53 @@ std::vector<OutputRecord> declare() {
   add("intruder/R", K::mean_ci, S, "",
       "needle: R = <v^2 w^2> / (<v^2> <w^2>) over the last half of the samples (002 eq. 34), per replica, then " +
           std::string(ci_text),
-      [needle](const RunOutput& o, std::size_t) -> Value {
-        if (!needle(o)) return {};
-        return needle(o)->correlation;
-      });
+      member_of(needle, &NeedleReport::correlation));
   add("intruder/rotational_temperature_ratio", K::mean_ci, S, "",
       "needle: T_rot/T_B, T_rot = I <omega^2>, over the last half of the samples; " + std::string(ci_text),
-      [needle](const RunOutput& o, std::size_t) -> Value {
-        if (!needle(o)) return {};
-        return needle(o)->rotational_temperature_ratio;
-      });
+      member_of(needle, &NeedleReport::rotational_temperature_ratio));
   add("intruder/newton_iterations", K::count, S, "", "needle: Newton steps for the event times (002 eq. 28)",
-      [needle](const RunOutput& o, std::size_t) -> Value {
-        if (!needle(o)) return {};
-        return needle(o)->newton_iterations;
-      });
+      member_of(needle, &NeedleReport::newton_iterations));
   add("intruder/bisection_fallbacks", K::count, S, "", "needle: bisection steps taken instead of a Newton step",
-      [needle](const RunOutput& o, std::size_t) -> Value {
-        if (!needle(o)) return {};
-        return needle(o)->bisection_fallbacks;
-      });
+      member_of(needle, &NeedleReport::bisection_fallbacks));
   add("intruder/velocity_y", K::rows, H, "velocity", "needle: v1_y of each replica (rows) at each sample (columns)",
-      [needle](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!needle(o)) return {};
         return rows(
             o.result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->velocity_y; });
       });
   add("intruder/angular_velocity", K::rows, H, "1/time",
       "needle: angular velocity omega of each replica (rows) at each sample (columns)",
-      [needle](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!needle(o)) return {};
         return rows(
             o.result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->angular_velocity; });
       });
   add("intruder/angular_shell_edges", K::numbers, S, "1/time", "needle: edges of the |omega| shells",
-      [needle](const RunOutput& o, std::size_t) -> Value {
-        if (!needle(o)) return {};
-        return needle(o)->angular_shell_edges;
-      });
+      member_of(needle, &NeedleReport::angular_shell_edges));
   add("intruder/angular_distribution", K::series, S, "time",
       "needle: density of |omega| per unit angular speed over the last half of the samples, per shell; " +
           std::string(ci_text),
-      [needle](const RunOutput& o, std::size_t) -> Value {
-        if (!needle(o)) return {};
-        return needle(o)->angular_distribution;
-      });
+      member_of(needle, &NeedleReport::angular_distribution));
   add("intruder/angular_distribution/counts", K::rows, H, "",
       "needle: samples of |omega| counted in each shell (columns), per replica (rows)",
-      [needle](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!needle(o)) return {};
         return rows(
             o.result, [](const ReplicaSeries& s) -> const auto& { return s.intruder->angular_counts; });
       });
 
   // Uniform shear flow (000 secs. 2-3, 003).
-  auto viscosity = [](const RunOutput& o) { return o.report.viscosity ? &*o.report.viscosity : nullptr; };
   add("viscosity", K::group, H, "",
       "uniform shear flow (000 secs. 2-3): eta* = nu eta / (n T) = -(P_xy / n T) / a*, window values over t >= "
       "window_start",
-      [viscosity](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!viscosity(o)) return {};
         return std::monostate{};
       });
   auto window = [&](const std::string& leaf, const std::string& units, const std::string& what,
                     std::function<std::optional<MeanCI>(const ViscosityReport&)> pick) {
     add("viscosity/" + leaf, K::mean_ci, S, units, what + "; " + ci_text,
-        [viscosity, pick](const RunOutput& o, std::size_t) -> Value {
+        [pick](const RunOutput& o, std::size_t) -> Value {
           if (!viscosity(o)) return {};
           const std::optional<MeanCI> m = pick(*viscosity(o));
           if (!m) return {};
@@ -415,23 +394,17 @@ std::vector<OutputRecord> declare() {
   window("drift", "", "the plateau test: eta* over the second half of the window minus over the first half",
          [](const ViscosityReport& v) { return v.drift; });
   add("viscosity/steady", K::flag, S, "", "|drift| within its confidence half-width: the Navier-Stokes plateau",
-      [viscosity](const RunOutput& o, std::size_t) -> Value {
-        if (!viscosity(o)) return {};
-        return viscosity(o)->steady;
-      });
+      member_of(viscosity, &ViscosityReport::steady));
   add("viscosity/window_start", K::number, S, "time", "first sample time of the window (the last half of the run)",
-      [viscosity](const RunOutput& o, std::size_t) -> Value {
-        if (!viscosity(o)) return {};
-        return viscosity(o)->window_start;
-      });
+      member_of(viscosity, &ViscosityReport::window_start));
   add("viscosity/reduced_shear_rate_range", K::numbers, S, "", "smallest and largest a* (replica means) in the window",
-      [viscosity](const RunOutput& o, std::size_t) -> Value {
+      [](const RunOutput& o, std::size_t) -> Value {
         if (!viscosity(o)) return {};
         return std::vector<double>{viscosity(o)->reduced_shear_rate_min, viscosity(o)->reduced_shear_rate_max};
       });
   auto shear_series = [&](const std::string& leaf, const std::string& what, MeanCISeries ViscosityReport::*member) {
     add("viscosity/" + leaf, K::series, S, "", what + " at the sample times; " + ci_text,
-        [viscosity, member](const RunOutput& o, std::size_t) -> Value {
+        [member](const RunOutput& o, std::size_t) -> Value {
           if (!viscosity(o)) return {};
           return viscosity(o)->*member;
         });
@@ -447,7 +420,7 @@ std::vector<OutputRecord> declare() {
         std::string(kinetic ? "kinetic" : "collisional") +
             " pressure tensor over n T of each replica at each sample (xx, yy, zz, xy, xz, yz); " +
             (kinetic ? "at the sample (000 eq. 17)" : "averaged since the previous sample (000 eq. 18)"),
-        [viscosity, kinetic](const RunOutput& o, std::size_t) -> Value {
+        [kinetic](const RunOutput& o, std::size_t) -> Value {
           if (!viscosity(o)) return {};
           ReplicaRows<double> out;
           for (const ReplicaSeries& s : o.result.replicas)
