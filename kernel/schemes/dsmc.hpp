@@ -67,18 +67,19 @@ class BasicDsmc {
   /// Stored energy may drift by this factor before the velocities are rescaled.
   static constexpr double rescale_factor = 1.25;
 
-  /// A replica held in one process (BatchedBackend).
+  /// A replica held in one process (BatchedBackend), with the scene's kernel.
   BasicDsmc(const Scene& scene, std::uint64_t replica, Effects... effects)
-      : BasicDsmc(scene, replica, Backend(scene), effects...) {}
+      : BasicDsmc(scene, replica, Backend(scene), Kernel::from_scene(scene), effects...) {}
 
-  /// A replica spread over `ranks` (RankWaveBackend).
+  /// A replica spread over `ranks` (RankWaveBackend), with the scene's kernel.
   BasicDsmc(const Scene& scene, std::uint64_t replica, const Ranks& ranks, Effects... effects)
-      : BasicDsmc(scene, replica, Backend(scene, ranks), effects...) {}
+      : BasicDsmc(scene, replica, Backend(scene, ranks), Kernel::from_scene(scene), effects...) {}
 
-  BasicDsmc(const Scene& scene, std::uint64_t replica, Backend backend, Effects... effects)
+  /// The backend and the kernel given (the run plan's, setup/run_scene.cpp).
+  BasicDsmc(const Scene& scene, std::uint64_t replica, Backend backend, Kernel kernel, Effects... effects)
       : scene_(scene),
         rng_(scene.run.seed, replica),
-        kernel_(Kernel::from_scene(scene)),
+        kernel_(kernel),
         pairs_(pair_coefficients(scene)),
         effects_(effects...),
         backend_(std::move(backend)),

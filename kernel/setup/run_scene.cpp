@@ -20,21 +20,21 @@ namespace {
 /// The time-stepped scheme with the plan's kernel and effects: the replicas over the threads with the batched
 /// backend, or, with the rank waves, every replica spread over options.spread, one after another.
 template <class Backend, class Real, class Kernel, class... Effects>
-RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Effects&... effects) {
+RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Kernel& kernel, const Effects&... effects) {
   if constexpr (std::is_same_v<Backend, RankWaveBackend>) {
     RunResult result;
     result.times = sample_times(scene.run);
     result.species_names.push_back(scene.species[0].name);
     result.threads = 1;
     for (int r = 0; r < scene.run.replicas; ++r) {
-      BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, static_cast<std::uint64_t>(r), *options.spread,
-                                                       effects...);
+      BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, static_cast<std::uint64_t>(r),
+                                                       Backend(scene, *options.spread), kernel, effects...);
       result.replicas.push_back(run_dsmc_replica(sim, scene, result.times, options.on_sample));
     }
     return result;
   } else {
     return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-      BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, replica, effects...);
+      BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, replica, Backend(scene), kernel, effects...);
       return run_dsmc_replica(sim, scene, times, options.on_sample);
     });
   }
@@ -52,7 +52,9 @@ RunResult run(const SteppedPlan& plan, const Scene& scene, const RunOptions& opt
           using Backend = std::conditional_t<std::is_same_v<Stage, RankWaveStage>, RankWaveBackend, BatchedBackend>;
           using Real = typename decltype(storage)::type;
           return std::apply(
-              [&](const auto&... effects) { return run_dsmc<Backend, Real, Kernel>(scene, options, effects...); },
+              [&](const auto&... effects) {
+                return run_dsmc<Backend, Real, Kernel>(scene, options, kernel, effects...);
+              },
               std::tuple_cat(shear.effects, thermostat.effects));
         }
       },
