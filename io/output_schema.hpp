@@ -1,5 +1,5 @@
 #pragma once
-// The output schema: every record a run writes, declared once (DESIGN.md, "One schema"). A record has a
+// The output schema: every record a run writes, declared once. A record has a
 // path ("temperature", "species/{species}/a2", "intruder/R"), a kind, units, a meaning and how to read its
 // value from a finished run. The HDF5 writer (io/hdf5_output.cpp), the JSON summary (io/summary_json.cpp)
 // and the format page (`granmc output-format`, docs/output-format.md) are driven by these declarations, so

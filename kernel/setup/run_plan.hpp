@@ -1,17 +1,17 @@
 #pragma once
-// The run plan: a validated Scene -> what runs, as types (DESIGN.md, "The plan at the centre"). make_plan is
+// The run plan: a validated Scene -> what runs, as types (docs/ARCHITECTURE.md). make_plan is
 // the one function that branches on the scene's kinds (method, kernel, thermostat, shear, bath, storage);
 // the support check with its reason, the instantiation name, `--explain` with its cost estimate
 // (setup/explain.hpp) and the dispatch (setup/run_scene.hpp) all read the plan. The plan holds the
 // evaluators themselves, built from the scene's parameters (collide/, effects/), so the dispatch only
 // visits it.
 //
-// A time-stepped plan is the product of four choices: the kernel, the shear effects, the thermostat
-// effects, the storage precision, and the collision backend. Not every product is supported:
-// stepped_refusal says which are not, at compile time, so the dispatch instantiates only the supported
-// ones and make_plan refuses the others with the same reason. Adding a collision kernel is one evaluator
-// file in collide/ and one alternative in KernelChoice, with its line in make_plan
-// (docs/ARCHITECTURE.md, "Adding a kernel").
+// A time-stepped plan is the product of five choices: the kernel, the shear effects, the thermostat
+// effects, the storage precision and the collision backend. Not every product is supported:
+// stepped_refusal and spread_refusal say which are not, at compile time, so the dispatch instantiates only the
+// supported ones and make_plan refuses the others with the same reason. Adding a collision kernel is one
+// evaluator file in collide/ and one alternative in KernelChoice, with its line in stepped_kernel and
+// event_plan (run_plan.cpp; docs/ARCHITECTURE.md, "Adding things").
 #include <stdexcept>
 #include <string>
 #include <tuple>
