@@ -48,6 +48,10 @@ struct Put {
     out.value(static_cast<std::uint8_t>(v.has_value()));
     if (v) visit_intruder_fields(*v, *this);
   }
+  void operator()(const char*, const std::optional<WeightedSeries>& v) {
+    out.value(static_cast<std::uint8_t>(v.has_value()));
+    if (v) visit_weighted_fields(*v, *this);
+  }
 };
 
 struct Get {
@@ -74,6 +78,9 @@ struct Get {
   }
   void operator()(const char* name, std::optional<IntruderSeries>& v) {
     if (flag(name)) visit_intruder_fields(v.emplace(), *this);
+  }
+  void operator()(const char* name, std::optional<WeightedSeries>& v) {
+    if (flag(name)) visit_weighted_fields(v.emplace(), *this);
   }
   bool flag(const char* what) {
     const auto f = in.value<std::uint8_t>();

@@ -1,5 +1,6 @@
 #include "io/output_schema.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <utility>
 
@@ -212,14 +213,16 @@ std::vector<OutputRecord> declare() {
       [](const RunOutput& o, std::size_t i) { return o.report.species[i].a3_last_half; });
   add("species/{species}/speed_distribution", K::series, S, "per d^3 v*",
       "distribution of the scaled speed over the last half of the samples, per shell of speed_shell_edges (000 eqs. "
-      "7, 19; the event scheme's |V| in velocity units, per d^3 V, 001 eq. 37); " +
+      "7, 19; the event scheme's |V| in velocity units, per d^3 V, 001 eq. 37; with weighted particles the weight "
+      "in each shell); " +
           std::string(ci_text),
       [](const RunOutput& o, std::size_t i) -> Value {
         if (o.report.species[i].speed_distribution.mean.empty()) return {};
         return o.report.species[i].speed_distribution;
       });
   add("species/{species}/speed_distribution/counts", K::rows, H, "",
-      "particles counted in each shell (columns), summed over the histogram samples, per replica (rows)",
+      "particles counted in each shell (columns), summed over the histogram samples, per replica (rows); with "
+      "weighted particles their weight in units of 1/N of the total",
       [](const RunOutput& o, std::size_t i) -> Value {
         if (o.report.species[i].speed_distribution.mean.empty()) return {};
         return rows(
@@ -281,6 +284,55 @@ std::vector<OutputRecord> declare() {
       "sum over rescalings of the removed centre-of-mass momentum |P| / sqrt(M 2 E_kin) per replica",
       [](const RunOutput& o, std::size_t) {
         return per_replica<double>(o.result, [](const ReplicaSeries& s) { return s.momentum_removed_relative; });
+      });
+
+  // Weighted particles (schemes/swpm_scheme.hpp, schemes/weight_control.hpp).
+  const auto weighted = [](const RunOutput& o) { return o.result.replicas.front().weighted.has_value(); };
+  const auto weighted_total = [weighted](std::uint64_t WeightedSeries::*member) {
+    return [weighted, member](const RunOutput& o, std::size_t) -> Value {
+      if (!weighted(o)) return {};
+      std::uint64_t total = 0;
+      for (const ReplicaSeries& s : o.result.replicas) total += (*s.weighted).*member;
+      return total;
+    };
+  };
+  add("weights", K::group, H, "", "weighted particles ([weights], SWPM): the particle count and the weight control",
+      [weighted](const RunOutput& o, std::size_t) -> Value {
+        if (!weighted(o)) return {};
+        return std::monostate{};
+      });
+  add("weights/particles", K::rows, H, "",
+      "particles of each replica (rows) at each sample (columns), after the weight control",
+      [weighted](const RunOutput& o, std::size_t) -> Value {
+        if (!weighted(o)) return {};
+        return rows(
+            o.result, [](const ReplicaSeries& s) -> const auto& { return s.weighted->particles; });
+      });
+  add("weights/particles_max", K::number, S, "", "the most particles of any replica at a sample",
+      [weighted](const RunOutput& o, std::size_t) -> Value {
+        if (!weighted(o)) return {};
+        double most = 0.0;
+        for (const ReplicaSeries& s : o.result.replicas)
+          for (double n : s.weighted->particles) most = std::max(most, n);
+        return most;
+      });
+  add("weights/transfers", K::count, S, "", "collisions of unequal weights (each adds a particle), all replicas",
+      weighted_total(&WeightedSeries::transfers));
+  add("weights/controls", K::count, S, "", "whole-system weight controls, all replicas",
+      weighted_total(&WeightedSeries::controls));
+  add("weights/split_copies", K::count, S, "", "particles added by splitting, all replicas",
+      weighted_total(&WeightedSeries::split_copies));
+  add("weights/reductions", K::count, S, "", "groups replaced by two particles, all replicas",
+      weighted_total(&WeightedSeries::reductions));
+  add("weights/reduced", K::count, S, "", "particles removed by the reductions, all replicas",
+      weighted_total(&WeightedSeries::reduced));
+  add("weights/conservation_residual_max", K::number, S, "",
+      "largest relative change of mass, momentum (over sqrt(W 2 E)) or energy at a weight control, all replicas",
+      [weighted](const RunOutput& o, std::size_t) -> Value {
+        if (!weighted(o)) return {};
+        double most = 0.0;
+        for (const ReplicaSeries& s : o.result.replicas) most = std::max(most, s.weighted->conservation_residual);
+        return most;
       });
 
   // The intruder (002).

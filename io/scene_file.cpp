@@ -26,9 +26,10 @@ namespace {
 
 // The keys of every table, in the order of SCENES.md (the order the messages list them in).
 constexpr std::string_view kTopLevel[] = {"run",        "species", "collision", "thermostat", "shear",
-                                          "relaxation", "initial", "intruder",  "output"};
+                                          "relaxation", "initial", "intruder",  "output",     "weights"};
 constexpr std::string_view kTopLevelLabels =
-    "[run], [[species]], [collision], [thermostat], [shear], [relaxation], [initial], [intruder], [output]";
+    "[run], [[species]], [collision], [thermostat], [shear], [relaxation], [initial], [intruder], [output], "
+    "[weights]";
 
 struct KnownTable {
   std::string_view label;  // as written in a scene: "[run]", "[[species]]", "output.histogram"
@@ -47,6 +48,7 @@ const std::vector<KnownTable>& known_tables() {
       {"[intruder]", {"dimension", "mass", "restitution", "bath", "bath_a", "bath_density", "length", "inertia"}},
       {"[output]", {"histogram"}},
       {"output.histogram", {"shells", "radius"}},
+      {"[weights]", {"scheme", "particles_per_shell", "growth"}},
   };
   return tables;
 }
@@ -446,6 +448,7 @@ class Reader {
   void read_thermostat(const Section& s, ThermostatConfig& th) const;
   void read_intruder(const Section& s, IntruderConfig& in) const;
   void read_output(const Section& s, HistogramConfig& h) const;
+  void read_weights(const Section& s, Scene& scene) const;
 
   const std::string& path_;
 };
@@ -771,6 +774,25 @@ void Reader::read_output(const Section& s, HistogramConfig& h) const {
   if (const auto r = number(hs, "radius", "a finite number > 0")) h.radius = positive(hs.key("radius"), *r);
 }
 
+void Reader::read_weights(const Section& s, Scene& scene) const {
+  check_keys(s);
+  WeightsConfig w;
+  if (!choice<bool>(s, "scheme", {{"swpm", true}}))
+    fail(s.key("scheme"), "missing required key; write scheme = \"swpm\" (stochastic weighted particles) in [weights]");
+  if (scene.run.method != Method::event)
+    fail(s.key("scheme"),
+         "\"swpm\" needs run.method = \"event\" (the time-step-free scheme of 001 sec. 4 that "
+         "it extends); got " +
+             quote_str(method_name(scene.run.method)));
+  if (const auto m = integer(s, "particles_per_shell", "an integer in [4, 2147483647]"))
+    w.particles_per_shell = static_cast<int>(int_range(s.key("particles_per_shell"), *m, 4, kIntMax));
+  if (const auto g = number(s, "growth", "a finite number > 1")) {
+    if (!(*g > 1.0) || !std::isfinite(*g)) fail(s.key("growth"), fmt(*g) + " is not a finite number > 1");
+    w.growth = *g;
+  }
+  scene.weights = w;
+}
+
 void Reader::read(const toml::table& root, Scene& scene) const {
   check_top_level(root);
   const Section run = table(root, "run", "[run]");
@@ -781,6 +803,7 @@ void Reader::read(const toml::table& root, Scene& scene) const {
   const Section initial = table(root, "initial", "[initial]");
   const Section intruder = table(root, "intruder", "[intruder]");
   const Section output = table(root, "output", "[output]");
+  const Section weights = table(root, "weights", "[weights]");
 
   read_run(run, scene.run);
   read_species(root, scene);
@@ -831,6 +854,7 @@ void Reader::read(const toml::table& root, Scene& scene) const {
     scene.intruder = in;
   }
   read_output(output, scene.histogram);
+  if (weights.table) read_weights(weights, scene);
 }
 
 std::string parse_error_message(const toml::parse_error& e, const std::string& path) {

@@ -79,6 +79,17 @@ void expect_same(const ReplicaSeries& a, const ReplicaSeries& b) {
   if (a.energy_residual) {
     EXPECT_TRUE(same_bytes(*a.energy_residual, *b.energy_residual));
   }
+  ASSERT_EQ(a.weighted.has_value(), b.weighted.has_value());
+  if (a.weighted) {
+    const WeightedSeries &p = *a.weighted, &q = *b.weighted;
+    EXPECT_TRUE(same_bytes(p.particles, q.particles));
+    EXPECT_EQ(p.transfers, q.transfers);
+    EXPECT_EQ(p.controls, q.controls);
+    EXPECT_EQ(p.split_copies, q.split_copies);
+    EXPECT_EQ(p.reductions, q.reductions);
+    EXPECT_EQ(p.reduced, q.reduced);
+    EXPECT_TRUE(same_bytes(p.conservation_residual, q.conservation_residual));
+  }
   ASSERT_EQ(a.intruder.has_value(), b.intruder.has_value());
   if (!a.intruder) return;
   const IntruderSeries &x = *a.intruder, &y = *b.intruder;
@@ -124,6 +135,7 @@ ReplicaSeries filled_replica(int r, bool intruder) {
   s.rescales = 15;
   s.momentum_removed_relative = 1e-300 * (r + 1);
   if (!intruder) s.energy_residual = 1e-15 * (r + 1);
+  if (!intruder && r % 4 == 0) s.weighted = WeightedSeries{doubles(6), 19, 20, 21, 22, 23, 1e-17 * (r + 1)};
   if (intruder) {
     IntruderSeries in;
     in.velocity = doubles(6);

@@ -49,7 +49,7 @@ class ResultsReader(unittest.TestCase):
 
     def test_reads_its_own_format(self):
         with open_results(self.h5) as f:
-            self.assertEqual(f.attrs["format_version"], f"{FORMAT_MAJOR}.0")
+            self.assertEqual(f.attrs["format_version"].split(".")[0], f"{FORMAT_MAJOR}")
             self.assertEqual(f["temperature/mean"].shape, (3,))
 
     def test_accepts_a_newer_minor_version(self):

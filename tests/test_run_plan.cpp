@@ -113,3 +113,41 @@ TEST(RunPlan, HoldsTheEvaluatorsWithTheSceneParameters) {
   EXPECT_EQ(what.particle_bytes, 64u * 16u);
   EXPECT_GT(what.candidates, 0.0);
 }
+
+TEST(RunPlan, WeightsMakeTheWeightedPlanOfTheEventScheme) {
+  const std::string text = R"([run]
+method = "event"
+t_end = 0.1
+samples = 2
+storage = "${storage}"
+[[species]]
+particles = 64
+[collision]
+kernel = "vhs"
+lambda = 0.5
+rate = 0.2
+[thermostat]
+kind = "white-noise"
+beta = 0.5
+[weights]
+scheme = "swpm"
+particles_per_shell = 8
+)";
+  auto with_storage = [&](const char* storage) {
+    std::string t = text;
+    t.replace(t.find("${storage}"), 10, storage);
+    return parse_scene(t, "weighted.toml");
+  };
+  const Scene scene = with_storage("double");
+  const RunPlan plan = make_plan(scene);
+  const auto& weighted = std::get<WeightedPlan>(plan.scheme);
+  EXPECT_EQ(std::get<VariableHardSpheres>(weighted.kernel).lambda, 0.5);
+  EXPECT_TRUE(weighted.white_noise);
+  EXPECT_EQ(instantiation_name(plan, scene), "swpm<vhs, white-noise>");
+  EXPECT_GT(explain_plan(plan, scene, 2).candidates, 0.0);
+  const RunResult result = run_plan(plan, scene, {});
+  ASSERT_EQ(result.replicas.size(), 1u);
+  EXPECT_TRUE(result.replicas[0].weighted.has_value());
+  EXPECT_NE(plan_refusal(with_storage("float")).find("[weights] with run.storage = \"float\""), std::string::npos);
+  EXPECT_NE(plan_refusal(scene, Spread::particles).find("method other than \"dsmc\""), std::string::npos);
+}

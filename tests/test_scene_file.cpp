@@ -231,6 +231,26 @@ beta = 0.5
   EXPECT_EQ(s.thermostat.beta, 0.5);
 }
 
+TEST(SceneFile, WeightsTable) {
+  const std::string event =
+      "[run]\nmethod = \"event\"\nt_end = 2.0\n" + kSpecies + "[collision]\nkernel = \"maxwell\"\nrate = 1.0\n";
+  EXPECT_FALSE(parse_scene(event, kPath).weights.has_value());
+  const Scene defaults = parse_scene(event + "[weights]\nscheme = \"swpm\"\n", kPath);
+  ASSERT_TRUE(defaults.weights.has_value());
+  EXPECT_EQ(defaults.weights->particles_per_shell, 256);
+  EXPECT_EQ(defaults.weights->growth, 2.0);
+  const Scene s = parse_scene(event + "[weights]\nscheme = \"swpm\"\nparticles_per_shell = 64\ngrowth = 1.5\n", kPath);
+  EXPECT_EQ(s.weights->particles_per_shell, 64);
+  EXPECT_EQ(s.weights->growth, 1.5);
+  expect_rejected(event + "[weights]\nparticles_per_shell = 64\n", "weights.scheme", "missing required key");
+  expect_rejected(event + "[weights]\nscheme = \"swp\"\n", "weights.scheme", "did you mean \"swpm\"?");
+  expect_rejected(kGas + "[weights]\nscheme = \"swpm\"\n", "weights.scheme", "needs run.method = \"event\"");
+  expect_rejected(event + "[weights]\nscheme = \"swpm\"\nparticles_per_shell = 3\n", "weights.particles_per_shell",
+                  "outside [4, 2147483647]");
+  expect_rejected(event + "[weights]\nscheme = \"swpm\"\ngrowth = 1.0\n", "weights.growth", "not a finite number > 1");
+  expect_rejected(event + "[weights]\nscheme = \"swpm\"\nsplit = 2\n", "weights.split", "allowed keys in [weights]");
+}
+
 TEST(SceneFile, GillespieIntruderScene) {
   const Scene s = parse_scene(R"([run]
 method = "gillespie"

@@ -67,6 +67,38 @@ Scene small_heated_scene(const char* method) {
   return scene_from_toml(text, {{"method", method}});
 }
 
+/// Weighted particles (SWPM) with white noise and hard spheres: splitting, weight transfers and reductions.
+Scene small_weighted_scene() {
+  constexpr std::string_view text = R"(
+    [run]
+    method = "event"
+    seed = 12345
+    replicas = 5
+    t_end = 1.0
+    samples = 10
+
+    [[species]]
+    particles = 1000
+
+    [collision]
+    kernel = "hard-sphere"
+    rate = 0.3
+    restitution = 0.7
+
+    [thermostat]
+    kind = "white-noise"
+    beta = 0.5
+
+    [output]
+    histogram = { shells = 24, radius = 12.0 }
+
+    [weights]
+    scheme = "swpm"
+    particles_per_shell = 16
+  )";
+  return scene_from_toml(text, {});
+}
+
 /// Enskog uniform shear flow with 003's relaxation term (shift, pressure tensor, replacements).
 Scene small_sheared_scene() {
   constexpr std::string_view text = R"(
@@ -98,7 +130,7 @@ Scene small_sheared_scene() {
 }
 
 std::string scheme_name(int which) {
-  const char* names[] = {"Cooling", "EventWhiteNoise", "DsmcWhiteNoise", "EnskogShearRelaxation"};
+  const char* names[] = {"Cooling", "EventWhiteNoise", "DsmcWhiteNoise", "EnskogShearRelaxation", "WeightedWhiteNoise"};
   return names[which];
 }
 
@@ -106,7 +138,7 @@ std::string scheme_name(int which) {
 
 class ThreadIdentity : public ::testing::TestWithParam<int> {};
 
-INSTANTIATE_TEST_SUITE_P(Schemes, ThreadIdentity, ::testing::Values(0, 1, 2, 3),
+INSTANTIATE_TEST_SUITE_P(Schemes, ThreadIdentity, ::testing::Values(0, 1, 2, 3, 4),
                          [](const auto& info) { return scheme_name(info.param); });
 
 namespace {
@@ -115,6 +147,7 @@ Scene scene_for(int which) {
   if (which == 1) return small_heated_scene("event");
   if (which == 2) return small_heated_scene("dsmc");
   if (which == 3) return small_sheared_scene();
+  if (which == 4) return small_weighted_scene();
   return small_cooling_scene();
 }
 
@@ -145,6 +178,12 @@ TEST_P(ThreadIdentity, TwoAndFourThreadsGiveTheBitsOfOne) {
       ASSERT_EQ(x.shear.has_value(), y.shear.has_value());
       if (x.shear) {
         EXPECT_TRUE(bit_identical(x.shear->pressure_collisional, y.shear->pressure_collisional)) << "replica " << r;
+      }
+      EXPECT_TRUE(bit_identical(x.species[0].speed_counts, y.species[0].speed_counts)) << "replica " << r;
+      ASSERT_EQ(x.weighted.has_value(), y.weighted.has_value());
+      if (x.weighted) {
+        EXPECT_TRUE(bit_identical(x.weighted->particles, y.weighted->particles)) << "replica " << r;
+        EXPECT_EQ(x.weighted->reductions, y.weighted->reductions);
       }
     }
   }

@@ -17,6 +17,8 @@ enum class RngPurpose : std::uint16_t {
   brownian_sync = 6,     // event scheme: sub = 0, step = sample index, index = particle (Remark 2 update)
   white_noise_kick = 7,  // time-stepped white noise: sub = species, step = time step, index = particle
   relaxation = 8,        // BGK-like relaxation (003): sub = 0, step = time step, index = block 0, 1, ...
+  swpm_candidate = 9,    // weighted particles: sub = 0, step = candidate draw, index = block 0..3
+  swpm_sync = 10,        // weighted particles: sub = 0, step = update of every particle, index = particle
 };
 
 }  // namespace granmc

@@ -87,6 +87,14 @@ struct HistogramConfig {
   double radius = 16.0;  // > 0
 };
 
+/// Weighted particles for the tails (001 Remark 10; schemes/swpm_scheme.hpp): present when the scene has a
+/// [weights] table (scheme = "swpm", the stochastic weighted particle method of Rjasanow and Wagner).
+struct WeightsConfig {
+  int particles_per_shell = 256;  // >= 4; M: the weight control's target count in every histogram shell
+  double growth = 2.0;            // > 1; the control also runs when the count reaches growth x its count after
+                                  // the last control
+};
+
 struct Scene {
   RunConfig run;
   std::vector<SpeciesConfig> species;  // 1 or 2 for gas scenes, empty for an intruder scene
@@ -98,6 +106,7 @@ struct Scene {
   double initial_temperature = 1.0;     // > 0, finite
   std::optional<IntruderConfig> intruder;
   HistogramConfig histogram;
+  std::optional<WeightsConfig> weights;
 
   std::string source_path;  // where the scene came from (for messages and output)
   std::string source_text;  // the file's text, stored with the results

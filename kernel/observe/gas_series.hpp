@@ -23,7 +23,8 @@ struct SpeciesSeries {
   std::vector<double> a2;               // (3/5) <V^4> / <V^2>^2 - 1
   std::vector<double> a3;               // 1 + 3 a2 - (9/35) <V^6> / <V^2>^3 (third Sonine coefficient)
   std::vector<double> speed_counts;     // histogram of v* = |V| / v0 over the stationary samples
-                                        // (observe/speed_histogram.hpp), output.histogram shells
+                                        // (observe/speed_histogram.hpp), output.histogram shells; for
+                                        // weighted particles the weight in each shell in units of 1 / N_i
 };
 
 /// What an intruder replica records (method "gillespie", 002).
@@ -47,6 +48,17 @@ struct ShearSeries {
   std::vector<SymTensor> pressure_collisional;  // P^c / (n T) averaged since the previous sample (eq. 18);
                                                 // zero at t = 0 and in the Boltzmann limit
   std::vector<double> reduced_shear_rate;       // a* = a / nu, nu = sqrt(pi) n sigma_12^2 v_0 (000 Fig. 10)
+};
+
+/// What a replica of weighted particles records (schemes/swpm_scheme.hpp, schemes/weight_control.hpp).
+struct WeightedSeries {
+  std::vector<double> particles;       // particles at each sample time, after the weight control
+  std::uint64_t transfers = 0;         // collisions of unequal weights, each adding a particle
+  std::uint64_t controls = 0;          // whole-system weight controls
+  std::uint64_t split_copies = 0;      // particles added by splitting
+  std::uint64_t reductions = 0;        // groups replaced by two particles
+  std::uint64_t reduced = 0;           // particles removed by the reductions
+  double conservation_residual = 0.0;  // largest relative change of mass, momentum or energy at a control
 };
 
 /// The documented bound on ReplicaSeries::energy_residual (docs/physics.md, "Energy balance"). The suite
@@ -80,6 +92,7 @@ struct ReplicaSeries {
   std::optional<double> energy_residual;
   std::optional<ShearSeries> shear;        // uniform shear flow
   std::optional<IntruderSeries> intruder;  // method "gillespie"
+  std::optional<WeightedSeries> weighted;  // [weights]
 };
 
 // Every field of a replica's series, each under its name, in one order: the one list that packing a replica
@@ -116,6 +129,17 @@ void visit_intruder_fields(S& s, Visit&& visit) {
 }
 
 template <class S, class Visit>
+void visit_weighted_fields(S& s, Visit&& visit) {
+  visit("particles", s.particles);
+  visit("transfers", s.transfers);
+  visit("controls", s.controls);
+  visit("split_copies", s.split_copies);
+  visit("reductions", s.reductions);
+  visit("reduced", s.reduced);
+  visit("conservation_residual", s.conservation_residual);
+}
+
+template <class S, class Visit>
 void visit_replica_fields(S& s, Visit&& visit) {
   visit("temperature", s.temperature);
   visit("log_temperature", s.log_temperature);
@@ -134,6 +158,7 @@ void visit_replica_fields(S& s, Visit&& visit) {
   visit("energy_residual", s.energy_residual);
   visit("shear", s.shear);
   visit("intruder", s.intruder);
+  visit("weighted", s.weighted);
 }
 
 #if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
@@ -142,7 +167,8 @@ void visit_replica_fields(S& s, Visit&& visit) {
 static_assert(sizeof(SpeciesSeries) == 120, "SpeciesSeries changed: add the new field to visit_species_fields");
 static_assert(sizeof(ShearSeries) == 72, "ShearSeries changed: add the new field to visit_shear_fields");
 static_assert(sizeof(IntruderSeries) == 144, "IntruderSeries changed: add the new field to visit_intruder_fields");
-static_assert(sizeof(ReplicaSeries) == 488, "ReplicaSeries changed: add the new field to visit_replica_fields");
+static_assert(sizeof(WeightedSeries) == 72, "WeightedSeries changed: add the new field to visit_weighted_fields");
+static_assert(sizeof(ReplicaSeries) == 568, "ReplicaSeries changed: add the new field to visit_replica_fields");
 #endif
 
 struct RunResult {

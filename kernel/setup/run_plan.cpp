@@ -159,7 +159,9 @@ RunPlan make_plan(const Scene& scene, Spread spread) {
   if (scene.run.method == Method::event) {
     EventPlan event = event_plan(scene);
     if (spread == Spread::particles) refuse_spread("a method other than \"dsmc\"");
-    return {event, spread};
+    if (!scene.weights) return {event, spread};
+    if (scene.run.storage != Storage::double_precision) refuse("[weights] with run.storage = \"float\"");
+    return {WeightedPlan{event.kernel, event.white_noise}, spread};
   }
   return {stepped_plan(scene, spread), spread};
 }

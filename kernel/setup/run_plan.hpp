@@ -125,6 +125,13 @@ struct EventPlan {
   bool white_noise = false;  // beta > 0 acts by lazy Brownian updates (001 eq. 23)
 };
 
+/// Weighted particles for the tails (SWPM, schemes/swpm_scheme.hpp; 001 Remark 10): the event scheme's
+/// gas, double storage.
+struct WeightedPlan {
+  KernelChoice kernel;
+  bool white_noise = false;  // beta > 0 acts by lazy Brownian updates (001 eq. 23)
+};
+
 /// The bath of an intruder (002 eqs. 18, 23).
 using BathChoice = std::variant<GaussianBath, PowerLawBath>;
 
@@ -143,7 +150,7 @@ struct IntruderDsmcPlan {
   BathChoice bath;
 };
 
-using SchemeChoice = std::variant<SteppedPlan, EventPlan, IntruderLinePlan, NeedlePlan, IntruderDsmcPlan>;
+using SchemeChoice = std::variant<SteppedPlan, EventPlan, WeightedPlan, IntruderLinePlan, NeedlePlan, IntruderDsmcPlan>;
 
 /// How the particles of a replica are placed: in one process, or one system over all MPI ranks.
 enum class Spread { replicas, particles };

@@ -12,6 +12,7 @@
 #include "kernel/schemes/rank_wave_backend.hpp"
 #include "kernel/schemes/replica_runner.hpp"
 #include "kernel/schemes/sample_times.hpp"
+#include "kernel/schemes/swpm_replica.hpp"
 
 namespace granmc {
 
@@ -70,6 +71,16 @@ RunResult run(const EventPlan& plan, const Scene& scene, const RunOptions& optio
         });
       },
       plan.kernel, plan.storage);
+}
+
+RunResult run(const WeightedPlan& plan, const Scene& scene, const RunOptions& options) {
+  return std::visit(
+      [&](const auto& kernel) {
+        return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+          return run_swpm_replica(scene, replica, times, options, kernel);
+        });
+      },
+      plan.kernel);
 }
 
 RunResult run(const IntruderLinePlan& plan, const Scene& scene, const RunOptions& options) {

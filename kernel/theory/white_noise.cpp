@@ -27,6 +27,11 @@ double maxwell_temperature_splitting(double t, double dt, double temperature0, d
   return (1.0 - 1.0 / particles) * (steady + (temperature0 - steady) * std::exp(-kappa * t));
 }
 
+double maxwell_white_noise_a2(double alpha) noexcept {
+  const double a = alpha;
+  return 2.0 * (1.0 - a) * (1.0 - a) * (1.0 + a) / (13.0 - 9.0 * a + a * a - a * a * a);
+}
+
 double maxwellian_relative_speed_moment(double p, double temperature) noexcept {
   return std::pow(4.0 * temperature, 0.5 * p) * std::tgamma(0.5 * (3.0 + p)) / std::tgamma(1.5);
 }

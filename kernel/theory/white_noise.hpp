@@ -26,6 +26,11 @@ double maxwell_temperature_particles(double t, double temperature0, double beta,
 double maxwell_temperature_splitting(double t, double dt, double temperature0, double beta, double rate, double alpha,
                                      double particles) noexcept;
 
+/// The exact steady a2 of Maxwell pseudomolecules heated by white noise (docs/derivations/maxwell-white-noise-a2.md):
+/// a2 = 2 (1 - alpha)^2 (1 + alpha) / (13 - 9 alpha + alpha^2 - alpha^3), independent of rate and beta
+/// (alpha = 1/2: 2/23 = 0.0870).
+double maxwell_white_noise_a2(double alpha) noexcept;
+
 /// <|u|^p> over pairs of independent Maxwellian unit-mass particles at temperature T:
 /// (4 T)^{p/2} Gamma((3 + p)/2) / Gamma(3/2).
 double maxwellian_relative_speed_moment(double p, double temperature) noexcept;

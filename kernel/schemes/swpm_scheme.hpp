@@ -1,0 +1,238 @@
+#pragma once
+// The stochastic weighted particle method (SWPM; Rjasanow and Wagner, J. Comput. Phys. 124 (1996) 243; Math.
+// Comput. Modelling 33 (2001) 907) for the uniformly heated or freely cooling inelastic Boltzmann equation of
+// 001 (df/dt - beta Lap_v f = gamma Q_alpha(f), 001 eq. 1, B = rate |u|^lambda), time-step free as 001 sec. 4,
+// one replica of one species: the tails of f resolved to densities far below 1/N (001 Remark 10). The
+// derivation, with the inelastic weight transfer: docs/derivations/swpm-inelastic.md.
+//
+// The particles (schemes/weighted_particles.hpp) represent nu = sum_k w_k delta(v - v_k), total weight 1.
+// A pair {i, j} collides at the rate 4 pi rate max(w_i, w_j) |v_i - v_j|^lambda; then the lighter partner,
+// l, takes its post-collision velocity (001 eq. 4) whole, and the heavier, h, keeps weight w_h - w_l at v_h
+// and gives weight w_l to a new particle at its post-collision velocity (the weight transfer gamma = min(w_i,
+// w_j), kappa = 0 of Rjasanow and Wagner). Equal weights collide as in the event scheme. Candidates come at
+// the majorant rate
+//   pi_hat = 4 pi rate U_max^lambda W_hat (n - 1),   W_hat = sum over weight classes of n_e 2^e,
+// an ordered pair is i by weight class (weighted_particles.hpp) and j uniform among the n - 1 others, and it
+// is real with probability (w_i / 2^e) (max(w_i, w_j) / (w_i + w_j)) (|v_i - v_j| / U_max)^lambda: the
+// two orders of a pair together give the rate above. As in the event scheme (schemes/event_scheme.hpp),
+// both partners are first brought to the candidate time by Brownian motion (001 eq. 23), U_max bounds
+// |v_i - v_j| by 2 max |v_k - V| and is raised when a touched particle exceeds it, and at every sample time
+// all particles are brought to that time. White noise moves each particle independently and leaves its
+// weight as it is.
+//
+// After a candidate, each particle it touched is split if it is heavier than its shell's target, and when
+// the particle count has grown by weights.growth, every particle is brought to the present and the weight
+// control (schemes/weight_control.hpp) runs; it also runs at every sample time.
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <stdexcept>
+
+#include "kernel/collide/collision_kernel.hpp"
+#include "kernel/collide/isotropic_scattering.hpp"
+#include "kernel/core/batch_variates.hpp"
+#include "kernel/core/philox_stream.hpp"
+#include "kernel/core/sampling.hpp"
+#include "kernel/core/scene.hpp"
+#include "kernel/schemes/initial_state.hpp"
+#include "kernel/schemes/weight_control.hpp"
+#include "kernel/schemes/weighted_particles.hpp"
+
+namespace granmc {
+
+struct SwpmTally {
+  std::uint64_t candidates = 0;           // candidate pairs
+  std::uint64_t collisions = 0;           // real collisions
+  std::uint64_t transfers = 0;            // collisions of unequal weights (each adds a particle)
+  std::uint64_t majorant_updates = 0;     // raises of U_max
+  std::uint64_t majorant_violations = 0;  // candidates with |v_i - v_j| above the U_max they were drawn with
+};
+
+template <EventKernel Kernel>
+class SwpmScheme {
+ public:
+  /// From the scene's initial Maxwellian: the N = species.particles velocities of the equal-weight start
+  /// (the same draws as the event scheme's), each of weight 1 / N, then the weight control at t = 0.
+  SwpmScheme(const Scene& scene, std::uint64_t replica, Kernel kernel)
+      : SwpmScheme(scene, replica, kernel, maxwellian_state<double>(scene, RandomStream(scene.run.seed, replica))) {}
+
+  /// From a given equal-weight start (one species, state.time = 0).
+  SwpmScheme(const Scene& scene, std::uint64_t replica, Kernel kernel, const GasState& start)
+      : kernel_(kernel),
+        rng_(scene.run.seed, replica),
+        alpha_(scene.collision.restitution[0][0]),
+        scale_(start.scale),
+        u_(start.scale.u()),
+        // the histogram's shells, in velocity units (as the event scheme's), in stored units
+        control_(static_cast<std::size_t>(scene.histogram.shells),
+                 scene.histogram.radius / static_cast<double>(scene.histogram.shells) / u_,
+                 scene.weights->particles_per_shell, scene.weights->growth) {
+    const SpeciesStore& store = start.species.at(0);
+    if (store.size() < 2) throw std::invalid_argument("the weighted scheme needs at least two particles");
+    const double w = 1.0 / static_cast<double>(store.size());
+    for (std::size_t k = 0; k < store.size(); ++k) particles_.add(store.velocity(k), 0.0, w);
+    noise_ = 2.0 * scene.thermostat.beta / (u_ * u_);  // 2 beta in stored units per unit time
+    // 4 pi rate (u U_max)^lambda per unit weight (U_max in stored units)
+    rate_prefactor_ = 4.0 * std::numbers::pi * scene.collision.rate * std::pow(u_, kernel_.lambda);
+    control_.control(particles_, 0.0);
+    reset_majorant();
+  }
+
+  [[nodiscard]] const WeightedParticles& particles() const noexcept { return particles_; }
+  [[nodiscard]] const SwpmTally& tally() const noexcept { return tally_; }
+  [[nodiscard]] const WeightControlTally& control_tally() const noexcept { return control_.tally(); }
+  /// The stored velocity unit, u = sqrt(T(0)) in scene units.
+  [[nodiscard]] const VelocityScale& scale() const noexcept { return scale_; }
+  [[nodiscard]] double time() const noexcept { return time_; }
+
+  /// Processes every candidate before t, brings all particles to t and runs the weight control.
+  void advance_to(double t) {
+    for (;;) {
+      const RandomBlock first = draw(0);
+      const double rate = candidate_rate();
+      const double next = time_ - std::log(uniform_open(first[0])) / rate;
+      if (!(next < t)) break;  // memoryless: the draw is discarded and the process restarts at t
+      time_ = next;
+      candidate(first);
+      ++draws_;
+      if (control_.due(particles_.size())) synchronise(time_);
+    }
+    ++draws_;
+    if (!(draws_ < RandomStream::counter_limit)) throw std::runtime_error("weighted scheme: random counter exhausted");
+    time_ = t;
+    synchronise(t);
+  }
+
+ private:
+  [[nodiscard]] RandomBlock draw(std::uint64_t block) const noexcept {
+    return rng_.block(RngPurpose::swpm_candidate, 0, draws_, block);
+  }
+
+  /// pi_hat = 4 pi rate U_max^lambda W_hat (n - 1).
+  [[nodiscard]] double candidate_rate() const noexcept {
+    return candidate_prefactor_ * particles_.weight_bound() * static_cast<double>(particles_.size() - 1);
+  }
+
+  /// 001 eq. (23) for particle k up to the present: v += sqrt(2 beta s) xi.
+  void brownian_update(std::size_t k, const Vec3& xi) noexcept {
+    const double s = time_ - particles_.last_update(k);
+    particles_.set_last_update(k, time_);
+    if (s > 0.0) particles_.set_velocity(k, particles_.velocity(k) + std::sqrt(noise_ * s) * xi);
+  }
+
+  /// One candidate at time_, with the blocks (swpm_candidate, 0, draws_, 0..4): block 0 the waiting time
+  /// (used by advance_to), the class share and the member of i; block 1 j and the acceptance uniform;
+  /// block 2 the direction e; blocks 3-4 the six normals of the two Brownian increments.
+  void candidate(const RandomBlock& b0) {
+    ++tally_.candidates;
+    const RandomBlock b1 = draw(1), b2 = draw(2);
+    double bound = 0.0;
+    const std::size_t i = particles_.pick(uniform_open52(b0[1], b0[2]), particles_.weight_bound(), b0[3], b1[0], bound);
+    std::size_t j = uniform_index(b1[1], b1[2], particles_.size() - 1);
+    j += j >= i ? 1 : 0;
+    if (noise_ != 0.0) {
+      const RandomBlock b3 = draw(3), b4 = draw(4);
+      double z[6];
+      standard_normal_pair(uniform_open(b3[0]), uniform_open(b3[1]), z[0], z[1]);
+      standard_normal_pair(uniform_open(b3[2]), uniform_open(b3[3]), z[2], z[3]);
+      standard_normal_pair(uniform_open(b4[0]), uniform_open(b4[1]), z[4], z[5]);
+      brownian_update(i, {z[0], z[1], z[2]});
+      brownian_update(j, {z[3], z[4], z[5]});
+    }
+    Vec3 vi = particles_.velocity(i), vj = particles_.velocity(j);
+    const double wi = particles_.weight(i), wj = particles_.weight(j);
+    double accept = (wi / bound) * (std::max(wi, wj) / (wi + wj));
+    if constexpr (!Kernel::constant_rate) {
+      const double drawn_with = majorant_;
+      raise_majorant(vi, vj);
+      const double ratio = norm(vi - vj) / drawn_with;
+      if (ratio > 1.0)
+        ++tally_.majorant_violations;  // collides as if at the bound (schemes/event_scheme.hpp)
+      else
+        accept *= std::pow(ratio, kernel_.lambda);
+    }
+    if (!(uniform_open(b1[3]) < accept)) {
+      split_if_heavy(i);
+      split_if_heavy(j);
+      return;
+    }
+    isotropic_scattering(vi, vj, unit_vector(uniform_open(b2[0]), uniform_open(b2[1])), alpha_);  // 001 eq. (4)
+    ++tally_.collisions;
+    if (wi == wj) {
+      particles_.set_velocity(i, vi);
+      particles_.set_velocity(j, vj);
+    } else {
+      // The weight transfer: the lighter partner l moves whole; the heavier h keeps w_h - w_l at v_h and
+      // a new particle of weight w_l takes h's post-collision velocity.
+      const bool i_heavier = wi > wj;
+      const std::size_t h = i_heavier ? i : j, l = i_heavier ? j : i;
+      particles_.set_velocity(l, i_heavier ? vj : vi);
+      particles_.set_weight(h, std::fabs(wi - wj));
+      const std::size_t born = particles_.add(i_heavier ? vi : vj, time_, std::min(wi, wj));
+      ++tally_.transfers;
+      split_if_heavy(born);
+    }
+    if constexpr (!Kernel::constant_rate) raise_majorant(vi, vj);
+    split_if_heavy(i);
+    split_if_heavy(j);
+  }
+
+  void split_if_heavy(std::size_t k) {
+    control_.count_split(split_particle(particles_, k, control_.copies(particles_.weight(k), particles_.velocity(k))));
+  }
+
+  /// Every particle to time t (001 Remark 2), normals from (swpm_sync, 0, syncs_, k); then the control.
+  void synchronise(double t) {
+    if (noise_ != 0.0)
+      for_each_particle_normal<64>(rng_, RngPurpose::swpm_sync, 0, syncs_, 0, particles_.size(),
+                                   [&](std::size_t k, const Vec3& xi) { brownian_update(k, xi); });
+    ++syncs_;
+    control_.control(particles_, t);
+    reset_majorant();
+  }
+
+  /// U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|) (001 steps 2.7, 2.10).
+  void raise_majorant(const Vec3& vi, const Vec3& vj) noexcept {
+    const double bound = 2.0 * std::sqrt(std::max(norm2(vi - reference_), norm2(vj - reference_)));
+    if (!(bound > majorant_)) return;
+    set_majorant(bound);
+    ++tally_.majorant_updates;
+  }
+
+  /// V := the weighted bulk velocity, U_max := 2 max_k |v_k - V|, with every particle current.
+  void reset_majorant() noexcept {
+    if constexpr (Kernel::constant_rate) {
+      candidate_prefactor_ = rate_prefactor_;
+    } else {
+      const WeightedParticles::Totals totals = particles_.totals();
+      reference_ = (1.0 / totals.weight) * totals.momentum;
+      double max2 = 0.0;
+      for (std::size_t k = 0; k < particles_.size(); ++k)
+        max2 = std::max(max2, norm2(particles_.velocity(k) - reference_));
+      set_majorant(2.0 * std::sqrt(max2));
+    }
+  }
+  void set_majorant(double value) noexcept {
+    majorant_ = value;
+    candidate_prefactor_ = rate_prefactor_ * std::pow(value, kernel_.lambda);
+  }
+
+  Kernel kernel_;
+  RandomStream rng_;
+  double alpha_;
+  VelocityScale scale_;  // the stored unit, fixed
+  double u_;             // its u = sqrt(T(0)), scene units
+  WeightControl control_;
+  WeightedParticles particles_;
+  double time_ = 0.0;
+  double noise_ = 0.0;                // 2 beta / u^2
+  double rate_prefactor_ = 0.0;       // 4 pi rate u^lambda
+  double candidate_prefactor_ = 0.0;  // 4 pi rate (u U_max)^lambda
+  double majorant_ = 0.0;             // U_max, stored units
+  Vec3 reference_;                    // V of the majorant, stored units
+  std::uint64_t draws_ = 0;           // candidate draws so far (the random counter)
+  std::uint64_t syncs_ = 0;           // updates of every particle so far
+  SwpmTally tally_;
+};
+
+}  // namespace granmc
