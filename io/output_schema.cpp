@@ -286,6 +286,39 @@ std::vector<OutputRecord> declare() {
         return per_replica<double>(o.result, [](const ReplicaSeries& s) { return s.momentum_removed_relative; });
       });
 
+  // The tail exponent (analysis/tail_fit.hpp).
+  add("tail", K::group, H, "",
+      "the high-velocity tail of one species' f: ln f = c + gamma ln v - a v^b fitted per replica (001 eqs. 19-21)",
+      [](const RunOutput& o, std::size_t) -> Value {
+        if (!o.report.tail) return {};
+        return std::monostate{};
+      });
+  add("tail/exponent", K::mean_ci, S, "",
+      "b of f ~ v^gamma exp(-a v^b) fitted to the replica-mean density from where it falls below 10^-3 of its "
+      "maximum to the last shell every replica has weight in; ci: lambda_p (001 eq. 31) times the jackknife "
+      "standard error over the replicas",
+      [](const RunOutput& o, std::size_t) -> Value {
+        if (!o.report.tail) return {};
+        return o.report.tail->exponent;
+      });
+  add("tail/fit_range", K::numbers, S, "velocity", "the fit window's speeds [from, to] (shell edges)",
+      [](const RunOutput& o, std::size_t) -> Value {
+        if (!o.report.tail) return {};
+        return std::vector<double>{o.report.tail->speed_from, o.report.tail->speed_to};
+      });
+  add("tail/profile", K::rows, H, "",
+      "b against the window's inner edge: rows (from, to, b, ci) for windows from where the mean density falls "
+      "below 10^-1, 10^-2, ... of its maximum to the last shell every replica has weight in; where b levels off "
+      "the window has left the pre-asymptotic region",
+      [](const RunOutput& o, std::size_t) -> Value {
+        if (o.report.tail_profile.empty()) return {};
+        ReplicaRows<double> out;
+        for (const TailWindow& w : o.report.tail_profile)
+          out.values.insert(out.values.end(), {w.speed_from, w.speed_to, w.exponent.mean, w.exponent.ci});
+        out.dims = {o.report.tail_profile.size(), 4};
+        return out;
+      });
+
   // Weighted particles (schemes/swpm_scheme.hpp, schemes/weight_control.hpp).
   const auto weighted = [](const RunOutput& o) { return o.result.replicas.front().weighted.has_value(); };
   const auto weighted_total = [weighted](std::uint64_t WeightedSeries::*member) {

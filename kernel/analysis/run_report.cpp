@@ -103,6 +103,10 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
           speed_distributions(result, i, report.speed_shell_edges, static_cast<double>(scene.species[i].particles));
       sp.speed_distribution = per_index(
           phi.size(), shells, [&](std::size_t r) -> const auto& { return phi[r]; });
+      if (scene.species.size() == 1) {  // the tail exponent of one species' f (001 eqs. 19-21, 38)
+        report.tail = fit_tail(report.speed_shell_edges, phi);
+        report.tail_profile = tail_exponent_profile(report.speed_shell_edges, phi);
+      }
     }
     report.species.push_back(std::move(sp));
   }

@@ -10,6 +10,7 @@
 
 #include "kernel/analysis/intruder_report.hpp"
 #include "kernel/analysis/series_statistics.hpp"
+#include "kernel/analysis/tail_fit.hpp"
 #include "kernel/analysis/viscosity_report.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/observe/gas_series.hpp"
@@ -49,6 +50,12 @@ struct RunReport {
 
   /// Haff's law and the Sonine HCS a2 when the scene is a monodisperse hard-sphere cooling state.
   std::optional<theory::CoolingStatePrediction> theory;
+
+  /// One species with a speed histogram: the tail exponent b of f ~ v^gamma exp(-a v^b) where the density is
+  /// below 10^-3 of its maximum, out to the last shell every replica has weight in (analysis/tail_fit.hpp),
+  /// and b against the window's inner edge.
+  std::optional<TailWindow> tail;
+  std::vector<TailWindow> tail_profile;
 
   std::optional<IntruderReport> intruder;    // method "gillespie"
   std::optional<ViscosityReport> viscosity;  // shear runs
