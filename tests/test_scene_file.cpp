@@ -237,7 +237,7 @@ TEST(SceneFile, WeightsTable) {
   EXPECT_FALSE(parse_scene(event, kPath).weights.has_value());
   const Scene defaults = parse_scene(event + "[weights]\nscheme = \"swpm\"\n", kPath);
   ASSERT_TRUE(defaults.weights.has_value());
-  EXPECT_EQ(defaults.weights->particles_per_shell, 256);
+  EXPECT_EQ(defaults.weights->particles_per_shell, 128);
   EXPECT_EQ(defaults.weights->growth, 2.0);
   const Scene s = parse_scene(event + "[weights]\nscheme = \"swpm\"\nparticles_per_shell = 64\ngrowth = 1.5\n", kPath);
   EXPECT_EQ(s.weights->particles_per_shell, 64);

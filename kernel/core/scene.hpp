@@ -90,7 +90,7 @@ struct HistogramConfig {
 /// Weighted particles for the tails (001 Remark 10; schemes/swpm_scheme.hpp): present when the scene has a
 /// [weights] table (scheme = "swpm", the stochastic weighted particle method of Rjasanow and Wagner).
 struct WeightsConfig {
-  int particles_per_shell = 256;  // >= 4; M: the weight control's target count in every histogram shell
+  int particles_per_shell = 128;  // >= 4; M: the weight control's target count in every histogram shell
   double growth = 2.0;            // > 1; the control also runs when the count reaches growth x its count after
                                   // the last control
 };
