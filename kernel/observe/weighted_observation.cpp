@@ -9,19 +9,18 @@ namespace granmc {
 
 namespace {
 
-/// The weighted moments about `centre`, as the moments of N equal particles: sums times N / W.
-SpeciesMoments weighted_moments(const WeightedParticles& p, const Vec3& centre, double particles) noexcept {
-  double w = 0.0, c2 = 0.0, c4 = 0.0, c6 = 0.0;
+/// The weighted moments about `centre`, as the moments of N equal particles: sums times to_counts = N / W.
+SpeciesMoments weighted_moments(const WeightedParticles& p, const Vec3& centre, double particles,
+                                double to_counts) noexcept {
+  double c2 = 0.0, c4 = 0.0, c6 = 0.0;
   Vec3 c;
   for (std::size_t k = 0; k < p.size(); ++k) {
     const double wk = p.weight(k), r2 = norm2(p.velocity(k) - centre);
-    w += wk;
     c += wk * p.velocity(k);
     c2 += wk * r2;
     c4 += wk * r2 * r2;
     c6 += wk * r2 * r2 * r2;
   }
-  const double to_counts = particles / w;
   SpeciesMoments m;
   m.particles = static_cast<std::size_t>(particles);
   m.sum_c2 = to_counts * c2;
@@ -36,15 +35,16 @@ SpeciesMoments weighted_moments(const WeightedParticles& p, const Vec3& centre, 
 void observe_weighted(const Scene& scene, const WeightedParticles& particles, const VelocityScale& scale,
                       ReplicaSeries& series, bool histogram) {
   const double n = static_cast<double>(scene.species[0].particles);
-  const SpeciesMoments origin = weighted_moments(particles, {}, n);
+  const double to_counts = n / particles.totals().weight;
+  const SpeciesMoments origin = weighted_moments(particles, {}, n, to_counts);
   const Vec3 flow = (1.0 / n) * origin.sum_c;
-  const Observed o = record_observation(scene, scale, {origin}, {weighted_moments(particles, flow, n)}, series);
+  const Observed o =
+      record_observation(scene, scale, {origin}, {weighted_moments(particles, flow, n, to_counts)}, series);
   if (!histogram) return;
   std::vector<double>& counts = series.species[0].speed_counts;
   counts.resize(static_cast<std::size_t>(scene.histogram.shells), 0.0);
   const double unit = histogram_speed_unit(scene, scale, o.theta_mixture);
   const double per_shell = static_cast<double>(counts.size()) / (scene.histogram.radius * unit);
-  const double to_counts = n / particles.totals().weight;
   for (std::size_t k = 0; k < particles.size(); ++k) {
     const double shell = norm(particles.velocity(k)) * per_shell;
     if (shell < static_cast<double>(counts.size()))

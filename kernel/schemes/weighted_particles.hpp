@@ -68,7 +68,7 @@ class WeightedParticles {
   void resum_weight_bound() noexcept {
     bound_total_ = 0.0;
     for (std::size_t c = highest_ + 1; c-- > lowest_;)
-      if (!members_[c].empty()) bound_total_ += std::ldexp(static_cast<double>(members_[c].size()), exponent_of(c));
+      if (!members_[c].empty()) bound_total_ += class_bound(c);
   }
 
   /// W_hat = sum over classes of n_e 2^e, a bound on the total weight: sum_k w_k < W_hat <= 2 sum_k w_k. Kept
@@ -85,7 +85,7 @@ class WeightedParticles {
     for (std::size_t c = highest_ + 1; c-- > lowest_;) {
       if (members_[c].empty()) continue;
       chosen = c;
-      rest -= std::ldexp(static_cast<double>(members_[c].size()), exponent_of(c));
+      rest -= class_bound(c);
       if (rest < 0.0) break;  // (rounding past the last class leaves the lightest class chosen)
     }
     bound = std::ldexp(1.0, exponent_of(chosen));
@@ -118,6 +118,10 @@ class WeightedParticles {
     return e;
   }
   static int exponent_of(std::size_t c) noexcept { return static_cast<int>(c) - offset; }
+  /// n_e 2^e of the class at index c.
+  [[nodiscard]] double class_bound(std::size_t c) const noexcept {
+    return std::ldexp(static_cast<double>(members_[c].size()), exponent_of(c));
+  }
 
   void join_class(std::size_t k, int e) {
     const std::size_t c = static_cast<std::size_t>(e + offset);
