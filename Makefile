@@ -125,7 +125,7 @@ tails-001-full-float: build
 tails-001-weighted: build
 	$(PYTHON) drivers/tails_weighted.py --granmc $(GRANMC) drivers/scenes/001_tails_weighted/example7.toml \
 	  drivers/scenes/001_tails_weighted/example8.toml drivers/scenes/001_tails_weighted/example9.toml \
-	  drivers/scenes/001_tails_weighted/vhs_lambda025.toml
+	  drivers/scenes/001_tails_weighted/vhs_lambda025.toml drivers/scenes/001_tails_weighted/hcs_hard_spheres.toml
 
 # The habits CI holds the tree to (docs/ARCHITECTURE.md, "Rules"): the lint (clang-format, pyflakes), the suite
 # (built with warnings as errors) at 2 OpenMP threads and again at 1 and 4, the fast tests under the address and

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Run 001 tail scenes with weighted particles (drivers/scenes/001_tails_weighted/) and report granmc's own
-tail fit (the summary's tail.exponent, kernel/analysis/tail_fit.hpp) against the theory b = 1 + lambda/2.
+tail fit (the summary's tail.exponent, kernel/analysis/tail_fit.hpp) against the theory: b = 1 + lambda/2 heated
+by white noise, b = lambda freely cooling (`granmc theory`).
 
 Usage: /usr/bin/python3 drivers/tails_weighted.py SCENE.toml [SCENE.toml ...] [--out DIR]
                                                   [--granmc build/bin/granmc] [--replicas R]
@@ -28,11 +29,14 @@ from scene_run import run_point  # noqa: E402
 
 
 def theory_exponent(granmc, scene_path):
-    out = subprocess.run([granmc, "theory", scene_path], check=True, capture_output=True, text=True).stdout
-    return json.loads(out).get("white_noise", {}).get("tail_exponent")
+    out = json.loads(subprocess.run([granmc, "theory", scene_path], check=True, capture_output=True, text=True).stdout)
+    for state in ("white_noise", "free_cooling"):
+        if "tail_exponent" in out.get(state, {}):
+            return out[state]["tail_exponent"]
+    return None
 
 
-def plot(name, h5_path, summary, b_theory, png):
+def plot(name, h5_path, summary, b_theory, speed, png):
     with h5py.File(h5_path, "r") as f:
         profile = f["tail/profile"][()] if "tail/profile" in f else None
     edges = summary["speed_shell_edges"]
@@ -43,17 +47,19 @@ def plot(name, h5_path, summary, b_theory, png):
     left.semilogy(centres, mean, lw=1, label="weighted particles")
     left.fill_between(centres, [max(m - c, 1e-300) for m, c in zip(mean, ci)], [m + c for m, c in zip(mean, ci)],
                       alpha=0.3)
+    positive = [m for m in mean if m > 0]
+    left.set_ylim(0.1 * min(positive), 10 * max(positive))  # a band reaching below 0 stays inside the frame
     lo, hi = summary["tail"]["fit_range"]
     left.axvspan(lo, hi, color="grey", alpha=0.15, label="fit window")
-    left.set_xlabel("|v|")
-    left.set_ylabel("f(|v|) per unit velocity volume")
+    left.set_xlabel(speed)
+    left.set_ylabel(f"f({speed}) per unit velocity volume")
     left.legend()
     if profile is not None and len(profile):
         right.errorbar(profile[:, 0], profile[:, 2], yerr=profile[:, 3], fmt="o", ms=3, capsize=2,
                        label="b, fit from the inner edge to the reach")
     if b_theory is not None:
         right.axhline(b_theory, color="k", lw=0.8, label=f"theory b = {b_theory:g}")
-    right.set_xlabel("inner edge of the fit window, |v|")
+    right.set_xlabel(f"inner edge of the fit window, {speed}")
     right.set_ylabel("tail exponent b")
     right.legend()
     fig.suptitle(name)
@@ -91,7 +97,9 @@ def main():
         rows.append(f"| {name} | {b:.3f} | {ci:.3f} | {b_theory:g} | {off:+.2f} | "
                     f"[{tail['fit_range'][0]:g}, {tail['fit_range'][1]:g}] | {summary['replicas']} | "
                     f"{summary['weights']['particles_max']:.0f} | {summary['wall_seconds']:.0f} |")
-        plot(name, stem + ".h5", summary, b_theory, stem + ".png")
+        default_speed = "velocity" if scene["run"]["method"] == "event" else "scaled"
+        scaled = scene.get("output", {}).get("histogram", {}).get("speed", default_speed) == "scaled"
+        plot(name, stem + ".h5", summary, b_theory, "v* = |V| / v0" if scaled else "|v|", stem + ".png")
         print(rows[-1], flush=True)
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write("\n".join(rows) + "\n")

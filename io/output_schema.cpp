@@ -166,7 +166,8 @@ std::vector<OutputRecord> declare() {
       });
   add("speed_shell_edges", K::numbers, S, "",
       "edges of the scaled-speed shells v* = |V|/v0 of the speed distributions, v0 = sqrt(2 T / m_hat) with m_hat "
-      "= m1 m2/(m1 + m2) for two species (000 eq. 7), m for one; the event scheme's in velocity units (001 eq. 37)",
+      "= m1 m2/(m1 + m2) for two species (000 eq. 7), m for one; with output.histogram.speed = \"velocity\" (the "
+      "event scheme's default, 001 eq. 37) |V| in velocity units",
       [](const RunOutput& o, std::size_t) { return o.report.speed_shell_edges; });
 
   // Species.
@@ -213,7 +214,8 @@ std::vector<OutputRecord> declare() {
       [](const RunOutput& o, std::size_t i) { return o.report.species[i].a3_last_half; });
   add("species/{species}/speed_distribution", K::series, S, "per d^3 v*",
       "distribution of the scaled speed over the last half of the samples, per shell of speed_shell_edges (000 eqs. "
-      "7, 19; the event scheme's |V| in velocity units, per d^3 V, 001 eq. 37; with weighted particles the weight "
+      "7, 19; with output.histogram.speed = \"velocity\" |V| in velocity units, per d^3 V, 001 eq. 37; with "
+      "weighted particles the weight "
       "in each shell); " +
           std::string(ci_text),
       [](const RunOutput& o, std::size_t i) -> Value {

@@ -47,7 +47,7 @@ const std::vector<KnownTable>& known_tables() {
       {"[initial]", {"temperature"}},
       {"[intruder]", {"dimension", "mass", "restitution", "bath", "bath_a", "bath_density", "length", "inertia"}},
       {"[output]", {"histogram"}},
-      {"output.histogram", {"shells", "radius"}},
+      {"output.histogram", {"shells", "radius", "speed"}},
       {"[weights]", {"scheme", "particles_per_shell", "growth"}},
   };
   return tables;
@@ -772,6 +772,9 @@ void Reader::read_output(const Section& s, HistogramConfig& h) const {
   if (const auto shells = integer(hs, "shells", "an integer in [1, 2147483647]"))
     h.shells = static_cast<int>(int_range(hs.key("shells"), *shells, 1, kIntMax));
   if (const auto r = number(hs, "radius", "a finite number > 0")) h.radius = positive(hs.key("radius"), *r);
+  if (const auto speed =
+          choice<HistogramSpeed>(hs, "speed", {{"scaled", HistogramSpeed::scaled}, {"velocity", HistogramSpeed::velocity}}))
+    h.speed = *speed;
 }
 
 void Reader::read_weights(const Section& s, Scene& scene) const {

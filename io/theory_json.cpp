@@ -112,6 +112,12 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
       }
       j["white_noise"] = w;
     }
+    if (scene.thermostat.kind == ThermostatKind::none && lambda > 0.0) {
+      applies.push_back(
+          "freely cooling state: tail exponent b = lambda of f ~ exp(-a c^b) in the scaled speed (van Noije and "
+          "Ernst 1998 for hard spheres)");
+      j["free_cooling"] = {{"tail_exponent", theory::free_cooling_tail_exponent(lambda)}};
+    }
   } else if (scene.thermostat.kind == ThermostatKind::white_noise && scene.species.size() == 1 &&
              scene.collision.kernel == CollisionKernel::hard_sphere) {
     applies.push_back("white-noise heated steady state, monodisperse hard spheres: first-Sonine a2");

@@ -458,6 +458,33 @@ histogram = { shells = 20, radius = 5.0 }
                         {"/temperature/replicas", "/intruder/velocity", "/intruder/speed_distribution/counts"});
 }
 
+/// Weighted particles (schemes/swpm_scheme.hpp) in a freely cooling hard-sphere gas, rescaled as it cools:
+/// replicas over ranks carry the weighted records too.
+TEST_F(MpiRun, WeightedParticlesAreBitIdentical) {
+  write("scene.toml", R"([run]
+method = "event"
+seed = 5
+replicas = 3
+t_end = 20.0
+dt = 0.5
+samples = 6
+sample_spacing = "log"
+[[species]]
+particles = 500
+[collision]
+kernel = "hard-sphere"
+rate = 1.0
+restitution = 0.5
+[output]
+histogram = { shells = 24, radius = 12.0, speed = "scaled" }
+[weights]
+scheme = "swpm"
+particles_per_shell = 8
+)");
+  expect_identical_runs(ways(true), {"/temperature/replicas", "/species/a/speed_distribution/counts",
+                                     "/weights/particles", "/weights/reductions", "/counters/rescales"});
+}
+
 /// `granmc sweep` under mpirun (docs/scaling.md, "Over MPI ranks"): the same index and, scene by scene, the
 /// same files as one process; only rank 0 writes; a rerun skips every scene.
 TEST_F(MpiRun, SweepOverRanksMatchesOneProcessAndResumes) {

@@ -110,7 +110,7 @@ enabled = true
 temperature = 2.0
 
 [output]
-histogram = { shells = 64, radius = 8.5 }
+histogram = { shells = 64, radius = 8.5, speed = "velocity" }
 )";
   const Scene s = parse_scene(text, kPath);
   EXPECT_EQ(s.run.method, Method::dsmc);
@@ -149,6 +149,7 @@ histogram = { shells = 64, radius = 8.5 }
   EXPECT_FALSE(s.intruder.has_value());
   EXPECT_EQ(s.histogram.shells, 64);
   EXPECT_EQ(s.histogram.radius, 8.5);
+  EXPECT_EQ(s.histogram.speed, HistogramSpeed::velocity);
   EXPECT_EQ(s.source_path, kPath);
   EXPECT_EQ(s.source_text, text);
 }
@@ -185,6 +186,7 @@ TEST(SceneFile, DefaultsAreApplied) {
   EXPECT_FALSE(s.intruder.has_value());
   EXPECT_EQ(s.histogram.shells, 128);
   EXPECT_EQ(s.histogram.radius, 16.0);
+  EXPECT_FALSE(s.histogram.speed.has_value()) << "absent: the method's default";
 }
 
 TEST(SceneFile, DefaultSpeciesNamesFollowTheIndex) {
@@ -336,7 +338,7 @@ TEST(SceneFile, UnknownKeyInEveryTable) {
   expect_rejected(kRun + "[intruder]\nradius = 1\n", "intruder.radius", "allowed keys in [intruder]");
   expect_rejected(kGas + "[output]\nhdf5 = \"x.h5\"\n", "output.hdf5", "allowed keys in [output]: histogram");
   expect_rejected(kGas + "[output]\nhistogram = { shells = 10, bins = 3 }\n", "output.histogram.bins",
-                  "allowed keys in output.histogram: shells, radius");
+                  "allowed keys in output.histogram: shells, radius, speed");
 }
 
 TEST(SceneFile, UnknownTopLevelTableOrKey) {
@@ -557,6 +559,8 @@ TEST(SceneFile, ShearAndOutputValues) {
                   "sum_i pi n_i sigma_i^3 / 6 = phi");
   expect_rejected(kGas + "[output]\nhistogram = { shells = 0 }\n", "output.histogram.shells", "0 is outside [1, ");
   expect_rejected(kGas + "[output]\nhistogram = { radius = 0 }\n", "output.histogram.radius", "0 is not > 0");
+  expect_rejected(kGas + "[output]\nhistogram = { speed = \"v0\" }\n", "output.histogram.speed",
+                  "\"scaled\" | \"velocity\"");
 }
 
 TEST(SceneFile, RunAdditions) {

@@ -82,9 +82,14 @@ struct IntruderConfig {
   double inertia = 0.0;       // >= 0; 0 means M L^2 / 12
 };
 
+/// What the speed histogram's shells measure: the scaled speed v* = |V| / v0(t) (observe/speed_histogram.hpp)
+/// or |V| in the scene's velocity units.
+enum class HistogramSpeed { scaled, velocity };
+
 struct HistogramConfig {
   int shells = 128;      // > 0
   double radius = 16.0;  // > 0
+  std::optional<HistogramSpeed> speed;  // absent: scaled for method "dsmc", velocity for "event"
 };
 
 /// Weighted particles for the tails (001 Remark 10; schemes/swpm_scheme.hpp): present when the scene has a

@@ -14,7 +14,9 @@ double scaled_speed_unit(const Scene& scene, double theta_mixture) noexcept {
 }
 
 double histogram_speed_unit(const Scene& scene, const VelocityScale& scale, double theta_mixture) noexcept {
-  if (scene.run.method == Method::event) return 1.0 / scale.u();
+  const HistogramSpeed speed = scene.histogram.speed.value_or(
+      scene.run.method == Method::event ? HistogramSpeed::velocity : HistogramSpeed::scaled);
+  if (speed == HistogramSpeed::velocity) return 1.0 / scale.u();
   return scaled_speed_unit(scene, theta_mixture);
 }
 

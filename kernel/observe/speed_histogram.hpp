@@ -14,9 +14,9 @@ namespace granmc {
 /// temperature in stored units theta = T / u^2.
 double scaled_speed_unit(const Scene& scene, double theta_mixture) noexcept;
 
-/// The unit the histogram's shells are in, in stored units: v0 (scaled_speed_unit) for the time-stepped
-/// scheme, whose scaled states 000 studies; the scene's velocity unit for the event scheme, whose
-/// histograms of f(|v|) 001 eq. (37) takes in physical units (output.histogram.radius in velocity units).
+/// The unit the histogram's shells are in, in stored units: v0 (scaled_speed_unit) for output.histogram.speed
+/// = "scaled", the scene's velocity unit for "velocity". Absent, the time-stepped scheme's is scaled (the
+/// scaled states 000 studies) and the event scheme's velocity (001 eq. (37) takes f(|v|) in physical units).
 double histogram_speed_unit(const Scene& scene, const VelocityScale& scale, double theta_mixture) noexcept;
 
 /// Adds the stored speeds of one species, divided by `unit`, to `counts` (shells of width radius/shells

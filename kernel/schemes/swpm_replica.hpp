@@ -28,6 +28,7 @@ ReplicaSeries run_swpm_replica(const Scene& scene, std::uint64_t replica, const 
   series.candidates = sim.tally().candidates;
   series.majorant_updates = sim.tally().majorant_updates;
   series.majorant_violations = sim.tally().majorant_violations;
+  series.rescales = sim.rescales();
   const WeightControlTally& control = sim.control_tally();
   weighted.transfers = sim.tally().transfers;
   weighted.controls = control.controls;

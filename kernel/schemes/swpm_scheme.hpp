@@ -22,7 +22,14 @@
 //
 // After a candidate, each particle it touched is split if it is heavier than its shell's target, and when
 // the particle count has grown by weights.growth, every particle is brought to the present and the weight
-// control (schemes/weight_control.hpp) runs; it also runs at every sample time.
+// control (schemes/weight_control.hpp) runs; it also runs at every sample time. The control's shells are the
+// histogram's (output.histogram, in its unit: velocity or v0(t), observe/speed_histogram.hpp).
+//
+// A freely cooling gas (thermostat "none") is rescaled, as the time-stepped scheme's (schemes/dsmc.hpp),
+// whenever all particles are current and its stored temperature has left [1/1.25, 1.25]: the weighted mean
+// velocity is removed and the velocities are scaled to unit stored temperature, the scale moving into log u
+// and the rates following it. The measure's shape is unchanged; its speeds stay far from underflow however
+// long the gas cools.
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -34,6 +41,7 @@
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
+#include "kernel/observe/speed_histogram.hpp"
 #include "kernel/schemes/initial_state.hpp"
 #include "kernel/schemes/weight_control.hpp"
 #include "kernel/schemes/weighted_particles.hpp"
@@ -58,24 +66,20 @@ class SwpmScheme {
 
   /// From a given equal-weight start (one species, state.time = 0).
   SwpmScheme(const Scene& scene, std::uint64_t replica, Kernel kernel, const GasState& start)
-      : kernel_(kernel),
+      : scene_(scene),
+        kernel_(kernel),
         rng_(scene.run.seed, replica),
         alpha_(scene.collision.restitution[0][0]),
+        rescaling_(scene.thermostat.kind == ThermostatKind::none),
         scale_(start.scale),
-        u_(start.scale.u()),
-        // the histogram's shells, in velocity units (as the event scheme's), in stored units
-        control_(static_cast<std::size_t>(scene.histogram.shells),
-                 scene.histogram.radius / static_cast<double>(scene.histogram.shells) / u_,
-                 scene.weights->particles_per_shell, scene.weights->growth) {
+        control_(static_cast<std::size_t>(scene.histogram.shells), 1.0, scene.weights->particles_per_shell,
+                 scene.weights->growth) {
     const SpeciesStore& store = start.species.at(0);
     if (store.size() < 2) throw std::invalid_argument("the weighted scheme needs at least two particles");
     const double w = 1.0 / static_cast<double>(store.size());
     for (std::size_t k = 0; k < store.size(); ++k) particles_.add(store.velocity(k), 0.0, w);
-    noise_ = 2.0 * scene.thermostat.beta / (u_ * u_);  // 2 beta in stored units per unit time
-    // 4 pi rate (u U_max)^lambda per unit weight (U_max in stored units)
-    rate_prefactor_ = 4.0 * std::numbers::pi * scene.collision.rate * std::pow(u_, kernel_.lambda);
-    control_.control(particles_, 0.0);
-    reset_majorant();
+    set_scale(scale_);
+    control_now(0.0);
   }
 
   [[nodiscard]] const WeightedParticles& particles() const noexcept { return particles_; }
@@ -84,6 +88,8 @@ class SwpmScheme {
   /// The stored velocity unit, u = sqrt(T(0)) in scene units.
   [[nodiscard]] const VelocityScale& scale() const noexcept { return scale_; }
   [[nodiscard]] double time() const noexcept { return time_; }
+  /// Rescalings of a freely cooling gas so far.
+  [[nodiscard]] std::uint64_t rescales() const noexcept { return rescales_; }
 
   /// Processes every candidate before t, brings all particles to t and runs the weight control.
   void advance_to(double t) {
@@ -187,8 +193,44 @@ class SwpmScheme {
       for_each_particle_normal<64>(rng_, RngPurpose::swpm_sync, 0, syncs_, 0, particles_.size(),
                                    [&](std::size_t k, const Vec3& xi) { brownian_update(k, xi); });
     ++syncs_;
+    control_now(t);
+  }
+
+  /// With every particle current: the rescaling of a cooling gas, the weight control in the histogram's
+  /// shells, and the majorant of the new system.
+  void control_now(double t) {
+    const WeightedParticles::Totals totals = particles_.totals();
+    const Vec3 mean = (1.0 / totals.weight) * totals.momentum;
+    // theta = m <|c - V|^2> / 3 of the measure (stored units)
+    const double theta = mass_ * (totals.twice_energy / totals.weight - norm2(mean)) / 3.0;
+    if (rescaling_ && (theta > rescale_factor || theta < 1.0 / rescale_factor)) {
+      const double s = 1.0 / std::sqrt(theta);
+      for (std::size_t k = 0; k < particles_.size(); ++k) particles_.set_velocity(k, s * (particles_.velocity(k) - mean));
+      VelocityScale scale = scale_;
+      scale.log_u -= std::log(s);
+      set_scale(scale);
+      ++rescales_;
+      control_.set_width(shell_width(1.0));
+    } else {
+      control_.set_width(shell_width(theta));
+    }
     control_.control(particles_, t);
     reset_majorant();
+  }
+
+  /// The stored unit and what follows it: 2 beta / u^2 and 4 pi rate u^lambda.
+  void set_scale(const VelocityScale& scale) noexcept {
+    scale_ = scale;
+    const double u = scale_.u();
+    noise_ = 2.0 * scene_.thermostat.beta / (u * u);  // 2 beta in stored units per unit time
+    // 4 pi rate (u U_max)^lambda per unit weight (U_max in stored units)
+    rate_prefactor_ = 4.0 * std::numbers::pi * scene_.collision.rate * std::pow(u, kernel_.lambda);
+  }
+
+  /// The histogram's shell width in stored units, at stored temperature theta.
+  [[nodiscard]] double shell_width(double theta) const noexcept {
+    return scene_.histogram.radius / static_cast<double>(scene_.histogram.shells) *
+           histogram_speed_unit(scene_, scale_, theta);
   }
 
   /// U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|) (001 steps 2.7, 2.10).
@@ -217,11 +259,17 @@ class SwpmScheme {
     candidate_prefactor_ = rate_prefactor_ * std::pow(value, kernel_.lambda);
   }
 
+  /// The stored temperature may drift by this factor before a cooling gas is rescaled.
+  static constexpr double rescale_factor = 1.25;
+
+  Scene scene_;  // a copy: the scheme may outlive the scene it was built from
   Kernel kernel_;
   RandomStream rng_;
   double alpha_;
-  VelocityScale scale_;  // the stored unit, fixed
-  double u_;             // its u = sqrt(T(0)), scene units
+  bool rescaling_;                             // freely cooling: rescaled to unit stored temperature
+  double mass_ = scene_.species.at(0).mass;    // m of theta = m <c^2> / 3
+  VelocityScale scale_;                        // the stored unit: u = sqrt(T(0)), then moved by rescalings
+  std::uint64_t rescales_ = 0;
   WeightControl control_;
   WeightedParticles particles_;
   double time_ = 0.0;

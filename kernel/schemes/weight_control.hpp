@@ -43,6 +43,8 @@ class WeightControl {
   /// The shell of a stored velocity, or shells() at or beyond the radius.
   [[nodiscard]] std::size_t shell_of(const Vec3& c) const noexcept;
   [[nodiscard]] std::size_t shells() const noexcept { return target_.size(); }
+  /// Moves the shells to width `width` (stored units), as the histogram's unit moves in stored units.
+  void set_width(double width) noexcept { per_speed_ = 1.0 / width; }
 
   /// How many copies a particle of weight w at c becomes: round(w / W_s) (at most M) when w > 2 W_s, else 1.
   [[nodiscard]] std::size_t copies(double w, const Vec3& c) const noexcept;

@@ -45,4 +45,6 @@ double white_noise_steady_temperature(double lambda, double rate, double alpha, 
 
 double tail_exponent(double lambda) noexcept { return 1.0 + 0.5 * lambda; }
 
+double free_cooling_tail_exponent(double lambda) noexcept { return lambda; }
+
 }  // namespace granmc::theory

@@ -43,4 +43,10 @@ double white_noise_steady_temperature(double lambda, double rate, double alpha, 
 /// High-velocity tail exponent b of f ~ exp(-a |v|^b) (001 eqs. 19-21): b = 1 + lambda / 2.
 double tail_exponent(double lambda) noexcept;
 
+/// The same in the freely cooling (homogeneous cooling) state, f(c) ~ exp(-a c^b) in the scaled speed c:
+/// b = lambda (hard spheres b = 1: van Noije and Ernst, Granular Matter 1 (1998) 57; lambda in (0, 1]:
+/// Ernst, Trizac and Barrat, J. Stat. Phys. 124 (2006) 549). Maxwell pseudomolecules (lambda = 0) have an
+/// algebraic tail instead.
+double free_cooling_tail_exponent(double lambda) noexcept;
+
 }  // namespace granmc::theory
