@@ -21,6 +21,11 @@ so that they share the state of the (shared, noisy) machine:
                                        event_maxwell or event_hard_sphere candidates/s over limit_pairs
                                        pairs/s at the same N, the limit kernel in the same bench_event run
                                                                                           (higher is better)
+  swpm_over_event/maxwell, /hard_sphere
+                                       bench_swpm: the weighted particles of 001 (examples 7 and 8, one
+                                       replica) against the equal-weight event scheme holding as many
+                                       particles, swpm_<kernel> / event_<kernel> collisions/s in the same run
+                                                                                          (higher is better)
   effect_over_plain/<scene>            bench_effects: time per candidate of a scene / of plain (one run, 5
                                        repetitions interleaved at random), one per scene     (lower is better)
   plain_over_hand                      bench_effects: plain / hand_specialised time per candidate
@@ -28,7 +33,8 @@ so that they share the state of the (shared, noisy) machine:
 
 Order of one round: bench_collisions (granmc, naive and the limit kernel) at 10^5, bench_event
 (event_maxwell, event_hard_sphere and the limit kernel, not the event_sync_* parts) at 10^5,
-bench_collisions at 10^6 (granmc and naive), the same two at 10^7, then bench_effects (all scenes). Repetitions: each program's default (3, 3, 3 and 5) unless --repetitions.
+bench_collisions at 10^6 (granmc and naive), the same two at 10^7, bench_swpm (all four), then bench_effects (all
+scenes). Repetitions: each program's default (3, 3, 3, 3 and 5) unless --repetitions.
 --rounds K runs K rounds (DIR/round1 ... DIR/roundK) and takes each ratio's median over the rounds.
 
 Without --save it compares the ratios with the baseline (perf/baselines/baseline.json) and prints a table; a
@@ -60,7 +66,7 @@ import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_BASELINE = os.path.join(REPO, "perf", "baselines", "baseline.json")
-PROGRAMS = ("bench_collisions", "bench_event", "bench_effects")
+PROGRAMS = ("bench_collisions", "bench_event", "bench_swpm", "bench_effects")
 INTERLEAVE = "--benchmark_enable_random_interleaving=true"
 # One round: (program, part, --benchmark_filter or None, extra flags), in this order. One size at a time, so
 # that no program rebuilds its 10^7-particle state between interleaved repetitions.
@@ -70,6 +76,7 @@ ROUND = (
     ("bench_collisions", "1e6", "^(granmc|naive)_collide/1000000$", (INTERLEAVE,)),
     ("bench_collisions", "1e7", "^(granmc|naive|limit)_collide/10000000$", (INTERLEAVE,)),
     ("bench_event", "1e7", "^(event_(maxwell|hard_sphere)|limit_pairs)/10000000$", ()),  # not interleaved: one 10^7 gas at a time
+    ("bench_swpm", "all", None, ()),
     ("bench_effects", "all", None, ()),  # its defaults: 5 repetitions, interleaved
 )
 DEFAULT_THRESHOLD = 0.10
@@ -81,6 +88,7 @@ DEFAULT_RATIO_THRESHOLDS = {
     "granmc_over_naive/1e7": 0.40,
     "granmc_over_packed_limit/*": 0.30,
     "event_*_over_packed_limit/*": 0.30,
+    "swpm_over_event/*": 0.20,
     "effect_over_plain/*": 0.20,
     "plain_over_hand": 0.20,
 }
@@ -88,6 +96,7 @@ DEFAULT_RATIO_THRESHOLDS = {
 SIZES = {"1e5": "100000", "1e7": "10000000"}
 NAIVE_SIZES = {"1e5": "100000", "1e6": "1000000", "1e7": "10000000"}  # bench_collisions only
 EVENT_KERNELS = ("maxwell", "hard_sphere")  # bench_event's event_<kernel>/N
+SWPM_KERNELS = ("maxwell", "hard_sphere")  # bench_swpm's swpm_<kernel> and event_<kernel>
 EFFECT_COUNTER = "time/cand"
 EFFECT_PLAIN = "plain"
 EFFECT_HAND = "hand_specialised"
@@ -186,6 +195,11 @@ def compute_ratios(runs):
                 _ratio(runs, ("bench_event", f"event_{kernel}/{n}", "candidates/s"),
                        ("bench_event", f"limit_pairs/{n}", "pairs/s")),
                 "higher", f"event_{kernel} candidates/s / limit_pairs pairs/s at N = {tag} (bench_event, same run)")
+    for kernel in SWPM_KERNELS:
+        put(f"swpm_over_event/{kernel}",
+            _ratio(runs, ("bench_swpm", f"swpm_{kernel}", "collisions/s"),
+                   ("bench_swpm", f"event_{kernel}", "collisions/s")),
+            "higher", f"swpm_{kernel} / event_{kernel} collisions/s at the same particle count (bench_swpm, same run)")
     effects = runs.get("bench_effects", {}).get("medians", {})
     for scene in sorted(effects):
         if scene in (EFFECT_PLAIN, EFFECT_HAND) or EFFECT_COUNTER not in effects[scene]:
@@ -395,6 +409,10 @@ def self_test():
                         "event_sync_maxwell/10000000": {"particles/s": 66e6},
                         "limit_pairs/100000": {"pairs/s": 150e6},
                         "limit_pairs/10000000": {"pairs/s": 38e6}},
+        "bench_swpm": {"swpm_maxwell": {"candidates/s": 1.7e6, "collisions/s": 1.2e6, "particles": 39e3},
+                       "event_maxwell": {"candidates/s": 15e6, "collisions/s": 15e6, "particles": 41e3},
+                       "swpm_hard_sphere": {"candidates/s": 2.6e6, "collisions/s": 0.4e6, "particles": 49e3},
+                       "event_hard_sphere": {"candidates/s": 12e6, "collisions/s": 2e6, "particles": 47e3}},
         "bench_effects": {"plain": {"time/cand": 80e-9}, "white_noise": {"time/cand": 840e-9},
                           "shear": {"time/cand": 100e-9}, "hand_specialised": {"time/cand": 78e-9},
                           "white_noise_apply": {"time/particle": 74e-9}},
@@ -423,13 +441,17 @@ def self_test():
              "granmc_over_packed_limit/1e7", "effect_over_plain/white_noise", "effect_over_plain/shear",
              "plain_over_hand"}
     event_names = {f"event_{k}_over_packed_limit/{tag}" for k in EVENT_KERNELS for tag in SIZES}
-    names |= event_names
+    swpm_names = {f"swpm_over_event/{k}" for k in SWPM_KERNELS}
+    names |= event_names | swpm_names
     check(set(base_ratios) == names, f"the ratios are {sorted(names)} (got {sorted(base_ratios)})")
     check(abs(base_ratios["event_hard_sphere_over_packed_limit/1e7"]["value"] - 0.2) < 1e-12 and
           abs(base_ratios["event_maxwell_over_packed_limit/1e5"]["value"] - 0.1) < 1e-12,
           "event_hard_sphere_over_packed_limit/1e7 = 7.6e6 / 38e6, "
           "event_maxwell_over_packed_limit/1e5 = 15e6 / 150e6")
     check(abs(base_ratios["granmc_over_naive/1e7"]["value"] - 2.0) < 1e-12, "granmc_over_naive/1e7 = 10e6 / 5e6")
+    check(abs(base_ratios["swpm_over_event/hard_sphere"]["value"] - 0.2) < 1e-12 and
+          abs(base_ratios["swpm_over_event/maxwell"]["value"] - 0.08) < 1e-12,
+          "swpm_over_event/hard_sphere = 0.4e6 / 2e6, swpm_over_event/maxwell = 1.2e6 / 15e6 (collisions/s)")
     check(abs(base_ratios["effect_over_plain/white_noise"]["value"] - 10.5) < 1e-12,
           "effect_over_plain/white_noise = 840 / 80")
     check(base_ratios == ratios_of(medians, aggregates=False), "median of single runs = median aggregate")
@@ -462,6 +484,13 @@ def self_test():
          "event collisions/s halved, candidates/s the same: not flagged", set()),
         (("bench_event", "event_sync_maxwell/10000000", "particles/s", 0.5), False,
          "event_sync_* 50 % slower: no ratio, not flagged", set()),
+        (("bench_swpm", "swpm_maxwell", "collisions/s", 0.8), True, "swpm Maxwell 20 % slower: flagged",
+         {"swpm_over_event/maxwell"}),
+        (("bench_swpm", "event_hard_sphere", "collisions/s", 1.2), True,
+         "bench_swpm's event hard spheres 20 % faster (swpm the same): swpm_over_event/hard_sphere flagged",
+         {"swpm_over_event/hard_sphere"}),
+        (("bench_swpm", "swpm_hard_sphere", "candidates/s", 0.5), False,
+         "swpm candidates/s halved, collisions/s the same: not flagged", set()),
         (("bench_effects", "shear", "time/cand", 1.2), True, "shear 20 % slower than plain: flagged",
          {"effect_over_plain/shear"}),
         (("bench_effects", "shear", "time/cand", 0.8), False, "shear 20 % faster: not flagged", set()),
