@@ -143,6 +143,15 @@ std::vector<OutputRecord> declare() {
       "log_temperature", "", "ln T of the mixture temperature (finite where T underflows)",
       [](const RunOutput& o) { return &o.report.log_temperature; },
       [](const ReplicaSeries& s) -> const auto& { return s.log_temperature; });
+  add("temperature_uncentred", K::series, S, "energy",
+      "the mixture temperature without removing the bulk velocity, T + (sum_i x_i m_i) |V|^2 / 3 with V = P / M "
+      "(momentum/replicas): 001's T = (1/3) int |v|^2 f (eq. 35), which the paper evaluates on a sample whose "
+      "mean is not removed (step 1.2; initial.zero_momentum = false), at the sample times (gas); " +
+          std::string(ci_text),
+      [](const RunOutput& o, std::size_t) -> Value {
+        if (!gas(o)) return {};
+        return o.report.temperature_uncentred;
+      });
   series_with_rows(
       "momentum_relative", "", "|P| / sqrt(M 2 E_kin), the centre-of-mass speed over the rms speed (gas)",
       [](const RunOutput& o) { return gas(o) ? &o.report.momentum_relative : nullptr; },

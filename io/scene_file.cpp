@@ -44,7 +44,7 @@ const std::vector<KnownTable>& known_tables() {
       {"[thermostat]", {"kind", "zeta", "beta"}},
       {"[shear]", {"rate"}},
       {"[relaxation]", {"enabled", "a2"}},
-      {"[initial]", {"temperature"}},
+      {"[initial]", {"temperature", "zero_momentum"}},
       {"[intruder]", {"dimension", "mass", "restitution", "bath", "bath_a", "bath_density", "length", "inertia"}},
       {"[output]", {"histogram"}},
       {"output.histogram", {"shells", "radius", "speed"}},
@@ -850,6 +850,7 @@ void Reader::read(const toml::table& root, Scene& scene) const {
   check_keys(initial);
   if (const auto t = number(initial, "temperature", "a finite number > 0"))
     scene.initial_temperature = positive(initial.key("temperature"), *t);
+  scene.initial_zero_momentum = boolean(initial, "zero_momentum").value_or(true);
 
   if (intruder.table) {
     IntruderConfig in;

@@ -89,14 +89,17 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
           "Maxwell pseudomolecules: exact temperature relaxation (001 eqs. 16-17), and (1 - 1/n) "
           "times it for the n-particle system (docs/physics.md)");
       const double n = static_cast<double>(scene.species[0].particles);
-      std::vector<double> exact, particles;
+      std::vector<double> exact, particles, uncentred;
       for (double t : times) {
         exact.push_back(theory::maxwell_temperature(t, scene.initial_temperature, beta, rate, alpha));
         particles.push_back(theory::maxwell_temperature_particles(t, scene.initial_temperature, beta, rate, alpha, n));
+        uncentred.push_back(theory::maxwell_temperature_uncentred(t, scene.initial_temperature, beta, rate, alpha, n,
+                                                                  scene.species[0].mass, scene.initial_zero_momentum));
       }
       j["maxwell_relaxation"] = {{"rate", theory::maxwell_relaxation_rate(rate, alpha)},
                                  {"temperature", exact},
-                                 {"temperature_particles", particles}};
+                                 {"temperature_particles", particles},
+                                 {"temperature_uncentred_particles", uncentred}};
     }
     if (beta > 0.0) {
       applies.push_back(

@@ -108,6 +108,7 @@ enabled = true
 
 [initial]
 temperature = 2.0
+zero_momentum = false
 
 [output]
 histogram = { shells = 64, radius = 8.5, speed = "velocity" }
@@ -146,6 +147,7 @@ histogram = { shells = 64, radius = 8.5, speed = "velocity" }
   EXPECT_EQ(s.shear_rate, -0.5);
   EXPECT_TRUE(s.relaxation);
   EXPECT_EQ(s.initial_temperature, 2.0);
+  EXPECT_FALSE(s.initial_zero_momentum);
   EXPECT_FALSE(s.intruder.has_value());
   EXPECT_EQ(s.histogram.shells, 64);
   EXPECT_EQ(s.histogram.radius, 8.5);
@@ -183,6 +185,7 @@ TEST(SceneFile, DefaultsAreApplied) {
   EXPECT_EQ(s.shear_rate, 0.0);
   EXPECT_FALSE(s.relaxation);
   EXPECT_EQ(s.initial_temperature, 1.0);
+  EXPECT_TRUE(s.initial_zero_momentum);
   EXPECT_FALSE(s.intruder.has_value());
   EXPECT_EQ(s.histogram.shells, 128);
   EXPECT_EQ(s.histogram.radius, 16.0);

@@ -67,6 +67,25 @@ std::vector<std::vector<double>> speed_distributions(const RunResult& result, st
   return phi;
 }
 
+/// T + (sum_i x_i m_i) |V|^2 / 3 per replica and sample, V = P / M the flow velocity: the mixture's
+/// sum_i x_i m_i <|v|^2> / 3 about the origin (the cross terms sum_i x_i m_i (<v>_i - V) vanish by V's
+/// definition).
+MeanCISeries uncentred_temperature(const Scene& scene, const RunResult& result) {
+  double mass = 0.0, mean_mass = 0.0;  // M = sum_i m_i N_i; sum_i x_i m_i
+  for (const SpeciesConfig& sp : scene.species) {
+    mass += sp.mass * static_cast<double>(sp.particles);
+    mean_mass += sp.density / total_density(scene) * sp.mass;
+  }
+  std::vector<std::vector<double>> t(result.replicas.size());
+  for (std::size_t r = 0; r < t.size(); ++r) {
+    const ReplicaSeries& s = result.replicas[r];
+    for (std::size_t k = 0; k < s.temperature.size(); ++k)
+      t[r].push_back(s.temperature[k] + mean_mass * norm2((1.0 / mass) * s.momentum[k]) / 3.0);
+  }
+  return per_index(
+      t.size(), result.times.size(), [&](std::size_t r) -> const auto& { return t[r]; });
+}
+
 }  // namespace
 
 RunReport make_run_report(const Scene& scene, const RunResult& result, double wall_seconds) {
@@ -78,9 +97,11 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
       result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; });
   report.log_temperature = per_time(
       result, [](const ReplicaSeries& s) -> const auto& { return s.log_temperature; });
-  if (!result.replicas.front().intruder)
+  if (!result.replicas.front().intruder) {
     report.momentum_relative = per_time(
         result, [](const ReplicaSeries& s) -> const auto& { return s.momentum_relative; });
+    report.temperature_uncentred = uncentred_temperature(scene, result);
+  }
   for (std::size_t i = 0; i < result.species_names.size(); ++i) {
     SpeciesReport sp;
     sp.name = result.species_names[i];

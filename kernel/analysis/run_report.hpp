@@ -33,6 +33,8 @@ struct RunReport {
   double wall_seconds = 0.0;              // wall-clock time of the run, s
   MeanCISeries temperature;               // mixture T(t) = sum_i x_i T_i, energy units
   MeanCISeries log_temperature;           // <ln T>(t) over replicas (finite where T underflows)
+  MeanCISeries temperature_uncentred;     // T + (sum_i x_i m_i) |V|^2 / 3, V = P / M: without removing the
+                                          // bulk velocity, 001's T = (1/3) int |v|^2 f (eq. 35); gas only
   MeanCISeries momentum_relative;         // |P| / sqrt(M 2 E_kin), dimensionless; empty for an intruder
   std::vector<SpeciesReport> species;     // in scene order
   std::vector<double> speed_shell_edges;  // v* shell edges of the speed distributions (shells + 1 values)

@@ -109,6 +109,7 @@ struct Scene {
   bool relaxation = false;              // BGK-like relaxation to the HCS (003)
   std::optional<double> relaxation_a2;  // a2 of its f^(0); default the first-Sonine HCS a2 (c0 / 2 of 003)
   double initial_temperature = 1.0;     // > 0, finite
+  bool initial_zero_momentum = true;    // remove each species' sample mean; false keeps it (001 step 1.2)
   std::optional<IntruderConfig> intruder;
   HistogramConfig histogram;
   std::optional<WeightsConfig> weights;

@@ -23,9 +23,11 @@ BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng
     BasicSpeciesStore<Real> store(static_cast<std::size_t>(sp.particles));
     const double width = 1.0 / std::sqrt(sp.mass);  // stored units: <c_x^2> = T(0) / (m u^2) = 1 / m
     maxwellian_velocities(store, rng, static_cast<std::uint16_t>(i), 0, width);
-    const SpeciesMoments m = species_moments(store);
-    const Vec3 mean = (1.0 / static_cast<double>(store.size())) * m.sum_c;
-    store.for_each_velocity([&](Vec3& c) { c -= mean; });
+    if (scene.initial_zero_momentum) {
+      const SpeciesMoments m = species_moments(store);
+      const Vec3 mean = (1.0 / static_cast<double>(store.size())) * m.sum_c;
+      store.for_each_velocity([&](Vec3& c) { c -= mean; });
+    }
     state.species.push_back(std::move(store));
   }
   return state;

@@ -81,13 +81,14 @@ class RankWaveBackend {
   [[nodiscard]] std::uint64_t waves() const noexcept { return waves_; }
 
   /// This rank's part of the Maxwellian start of schemes/initial_state.cpp, particle k from the same block
-  /// (000 eq. 13), with the mean of all particles removed.
+  /// (000 eq. 13), with the mean of all particles removed unless initial.zero_momentum is false.
   template <class Real>
   BasicGasState<Real> initial_state(const Scene& scene, const RandomStream& rng) const {
     BasicGasState<Real> state;
     state.species.emplace_back(hi_ - lo_);
     state.scale.log_u = 0.5 * std::log(scene.initial_temperature);
     maxwellian_velocities(state.species[0], rng, 0, lo_, 1.0 / std::sqrt(mass_));
+    if (!scene.initial_zero_momentum) return state;
     const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments_about(state.species[0], {}).sum_c;
     state.species[0].for_each_velocity([&](Vec3& c) { c -= mean; });
     return state;

@@ -20,6 +20,12 @@ double maxwell_temperature_particles(double t, double temperature0, double beta,
   return (1.0 - 1.0 / particles) * maxwell_temperature(t, temperature0, beta, rate, alpha);
 }
 
+double maxwell_temperature_uncentred(double t, double temperature0, double beta, double rate, double alpha,
+                                     double particles, double mass, bool zero_momentum) noexcept {
+  const double bulk = (zero_momentum ? 0.0 : temperature0) + 2.0 * mass * beta * t;
+  return maxwell_temperature_particles(t, temperature0, beta, rate, alpha, particles) + bulk / particles;
+}
+
 double maxwell_temperature_splitting(double t, double dt, double temperature0, double beta, double rate, double alpha,
                                      double particles) noexcept {
   const double kappa = maxwell_relaxation_rate(rate, alpha);

@@ -17,6 +17,14 @@ double maxwell_temperature(double t, double temperature0, double beta, double ra
 double maxwell_temperature_particles(double t, double temperature0, double beta, double rate, double alpha,
                                      double particles) noexcept;
 
+/// The expected temperature of the same system without removing the bulk velocity V, (1/3) m <|v|^2>
+/// (001's estimator, eq. 35): (1 - 1/n) T(t) + m |V|^2 / 3 with E[m |V(t)|^2 / 3] = (T(0) + 2 m beta t) / n
+/// when the initial sample keeps its mean (001 step 1.2; zero_momentum false) and 2 m beta t / n when it
+/// is removed: collisions keep V, and the noise moves it as the mean of n independent Brownian paths
+/// (docs/physics.md, "001's temperature estimator").
+double maxwell_temperature_uncentred(double t, double temperature0, double beta, double rate, double alpha,
+                                     double particles, double mass, bool zero_momentum) noexcept;
+
 /// The same with the time-stepped scheme's first-order splitting (collisions, then the noise of the whole
 /// step, effects/white_noise.hpp), at t = k dt: T_{k+1} = e^{-kappa dt} T_k + 2 beta dt, i.e.
 /// T_k = T_dt + (T0 - T_dt) e^{-kappa t}, T_dt = 2 beta dt / (1 - e^{-kappa dt}); times (1 - 1/n) for n
