@@ -482,7 +482,7 @@ scheme = "swpm"
 particles_per_shell = 8
 )");
   expect_identical_runs(ways(true), {"/temperature/replicas", "/species/a/speed_distribution/counts",
-                                     "/weights/particles", "/weights/reductions", "/counters/rescales"});
+                                     "/weights/particles", "/weights@reductions", "/counters/rescales"});
 }
 
 /// `granmc sweep` under mpirun (docs/scaling.md, "Over MPI ranks"): the same index and, scene by scene, the
