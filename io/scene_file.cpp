@@ -772,8 +772,8 @@ void Reader::read_output(const Section& s, HistogramConfig& h) const {
   if (const auto shells = integer(hs, "shells", "an integer in [1, 2147483647]"))
     h.shells = static_cast<int>(int_range(hs.key("shells"), *shells, 1, kIntMax));
   if (const auto r = number(hs, "radius", "a finite number > 0")) h.radius = positive(hs.key("radius"), *r);
-  if (const auto speed =
-          choice<HistogramSpeed>(hs, "speed", {{"scaled", HistogramSpeed::scaled}, {"velocity", HistogramSpeed::velocity}}))
+  if (const auto speed = choice<HistogramSpeed>(
+          hs, "speed", {{"scaled", HistogramSpeed::scaled}, {"velocity", HistogramSpeed::velocity}}))
     h.speed = *speed;
 }
 

@@ -139,11 +139,12 @@ void check_uncentred_estimator(double beta, bool zero_momentum, double ci_bound)
   ASSERT_EQ(t.mean.size(), r.times.size());
   double largest_ci = 0.0;
   for (std::size_t k = 0; k < r.times.size(); ++k) {
-    const double exact = theory::maxwell_temperature_uncentred(r.times[k], 1.0, beta, s.collision.rate, 0.5, 64.0,
-                                                               1.0, zero_momentum);
+    const double exact =
+        theory::maxwell_temperature_uncentred(r.times[k], 1.0, beta, s.collision.rate, 0.5, 64.0, 1.0, zero_momentum);
     const double relative_ci = t.ci[k] / exact;
     largest_ci = std::max(largest_ci, relative_ci);
-    EXPECT_TRUE(within_ci("T_uncentred / exact", t.mean[k] / exact, relative_ci, 1.0, ci_bound)) << "t = " << r.times[k];
+    EXPECT_TRUE(within_ci("T_uncentred / exact", t.mean[k] / exact, relative_ci, 1.0, ci_bound))
+        << "t = " << r.times[k];
   }
   const double boltzmann = theory::maxwell_temperature(r.times.back(), 1.0, beta, s.collision.rate, 0.5);
   std::printf("beta = %g, zero_momentum = %d: E at t = 8 %.4f (law %.4f), largest relative CI %.4f\n", beta,

@@ -87,8 +87,8 @@ struct IntruderConfig {
 enum class HistogramSpeed { scaled, velocity };
 
 struct HistogramConfig {
-  int shells = 128;      // > 0
-  double radius = 16.0;  // > 0
+  int shells = 128;                     // > 0
+  double radius = 16.0;                 // > 0
   std::optional<HistogramSpeed> speed;  // absent: scaled for method "dsmc", velocity for "event"
 };
 

@@ -205,7 +205,8 @@ class SwpmScheme {
     const double theta = mass_ * (totals.twice_energy / totals.weight - norm2(mean)) / 3.0;
     if (rescaling_ && (theta > rescale_factor || theta < 1.0 / rescale_factor)) {
       const double s = 1.0 / std::sqrt(theta);
-      for (std::size_t k = 0; k < particles_.size(); ++k) particles_.set_velocity(k, s * (particles_.velocity(k) - mean));
+      for (std::size_t k = 0; k < particles_.size(); ++k)
+        particles_.set_velocity(k, s * (particles_.velocity(k) - mean));
       VelocityScale scale = scale_;
       scale.log_u -= std::log(s);
       set_scale(scale);
@@ -266,9 +267,9 @@ class SwpmScheme {
   Kernel kernel_;
   RandomStream rng_;
   double alpha_;
-  bool rescaling_;                             // freely cooling: rescaled to unit stored temperature
-  double mass_ = scene_.species.at(0).mass;    // m of theta = m <c^2> / 3
-  VelocityScale scale_;                        // the stored unit: u = sqrt(T(0)), then moved by rescalings
+  bool rescaling_;                           // freely cooling: rescaled to unit stored temperature
+  double mass_ = scene_.species.at(0).mass;  // m of theta = m <c^2> / 3
+  VelocityScale scale_;                      // the stored unit: u = sqrt(T(0)), then moved by rescalings
   std::uint64_t rescales_ = 0;
   WeightControl control_;
   WeightedParticles particles_;
