@@ -16,8 +16,8 @@ points done with the same scene, and a killed run leaves no half-written point. 
 found through index.json by its values. `--mpi R` runs the sweeps as `mpirun -np R --oversubscribe granmc
 sweep ...`, spreading each point's replicas over R ranks; it needs the MPI build (`make mpi`, then
 `--granmc build-mpi/bin/granmc`). Theory lines come from `granmc theory` on a fine grid. Output:
-OUT/figure.png, OUT/table.md (simulation with CI against theory) and OUT/figure.json (all numbers, and
-each point's HDF5 file relative to OUT).
+OUT/figure.png, OUT/table.md (simulation with CI against theory, each point's seed, and what a seed shared by
+all points means for reading it) and OUT/figure.json (all numbers, and each point's HDF5 file relative to OUT).
 
 Swept parameters: "alpha" (every restitution coefficient), "phi" (collision.packing_fraction), and for two
 species "mu" (m_1/m_2), "omega" (sigma_1/sigma_2), "delta" (n_1/n_2, total density and particles kept).
@@ -345,6 +345,7 @@ def main():
             for x in x_values:
                 summary, hdf5 = runs[(ci_, x)]
                 pts.append({"x": x, "sim": simulated(summary, y), "wall_seconds": summary["wall_seconds"],
+                            "seed": scenes[(ci_, x)]["run"]["seed"],
                             "hdf5": os.path.relpath(hdf5, out),
                             "theory": theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),
                                                             os.path.join(out, "theory.toml")), y)})
@@ -364,7 +365,8 @@ def main():
 
 
 def normalise(results):
-    """gamma(x)/gamma(x = first value) per curve; CIs of the two independent runs combined."""
+    """gamma(x)/gamma(x = first value) per curve; CIs of the two runs combined as for independent runs (runs
+    with one seed are correlated instead: table.md says which)."""
     for c in results:
         if c["points"]:
             _, g0, e0 = c["points"][0]["sim"][0]
@@ -381,7 +383,8 @@ def normalise(results):
 
 def relative_to_curve(results, label):
     """Every other curve divided, point by point and line by line, by the curve `label` at the same x (e.g.
-    eta(alpha)/eta(1) of 000 Figs. 7-9); CIs of the independent runs combined. The reference curve is dropped."""
+    eta(alpha)/eta(1) of 000 Figs. 7-9); CIs combined as for independent runs (runs with one seed are correlated
+    instead: table.md says which). The reference curve is dropped."""
     ref = next(c for c in results if c["label"] == label)
     out = []
     for c in results:
@@ -397,18 +400,30 @@ def relative_to_curve(results, label):
     return out
 
 
+def seed_note(results):
+    """What the points' seeds mean for reading the table: one shared seed makes the points correlated."""
+    seeds = sorted({pt["seed"] for c in results for pt in c["points"]})
+    if len(seeds) == 1:
+        return (f"Every point runs with seed {seeds[0]}: the points share their random numbers, so they are "
+                "correlated. Differences between points are resolved better than each CI says, and an offset "
+                "common to neighbouring points is one realization, not a bias.\n\n")
+    return f"Seeds: {', '.join(str(s) for s in seeds)} (column seed); points with different seeds are independent.\n\n"
+
+
 def write_table(fig, results, path):
     with open(path, "w") as f:
         f.write(f"# {fig['paper']}: {fig['caption']}\n\n")
-        f.write("| curve | x | quantity | granmc | CI | " + " | ".join(approximations(results)) + " | run (s) |\n")
-        f.write("|---|---|---|---|---|" + "---|" * len(approximations(results)) + "---|\n")
+        if any(c["points"] for c in results):
+            f.write(seed_note(results))
+        f.write("| curve | x | quantity | granmc | CI | " + " | ".join(approximations(results)) + " | seed | run (s) |\n")
+        f.write("|---|---|---|---|---|" + "---|" * len(approximations(results)) + "---|---|\n")
         for c in results:
             for pt in c["points"]:
                 for s, (suffix, m, e) in enumerate(pt["sim"]):
                     th = [fmt(pt["theory"].get(a, [None] * (s + 1))[s] if s < len(pt["theory"].get(a, [])) else None)
                           for a in approximations(results)]
                     f.write(f"| {c['label']} | {pt['x']:g} | {fig['y']}{suffix} | {m:.4f} | {e:.4f} | "
-                            + " | ".join(th) + f" | {pt['wall_seconds']:.0f} |\n")
+                            + " | ".join(th) + f" | {pt['seed']} | {pt['wall_seconds']:.0f} |\n")
 
 
 def approximations(results):
