@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
-.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-8-shear-rate fig-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-8-shear-rate fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted intruder-cost accuracy-cost bench-effects stability
 
 all: build
@@ -51,6 +51,11 @@ figures-000: fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000
 # Paper 003: eta^k/eta0 and eta/eta0 against phi in the modified shear flow (results/003_viscosity/).
 fig-003: build
 	$(PYTHON) drivers/figure.py drivers/scenes/003_viscosity/figure.toml --granmc $(GRANMC)
+
+# 003's evolution (drivers/evolution_003.py): eta*(t), a*(t) and T(t) of the modified shear flow from the
+# start to the approach to the cooling state, dilute, alpha = 0.8 and 0.6, t in [0, 250] (about 3 min).
+evolution-003: build
+	$(PYTHON) drivers/evolution_003.py drivers/scenes/003_viscosity/base.toml --restitution 0.8 0.6 --t-end 250
 
 # 003's relaxation term: how the choice of f^(0) moves eta (results/003_f0_bias/table.md, about 4 min).
 relaxation-bias-003: build
