@@ -7,6 +7,10 @@
 
 namespace granmc {
 
+/// A cooling run's stored temperature (or energy) may drift by this factor before the velocities are
+/// rescaled to unit stored temperature (schemes/dsmc.hpp, schemes/swpm_scheme.hpp).
+inline constexpr double rescale_factor = 1.25;
+
 struct VelocityScale {
   double log_u = 0.0;  // log of the velocity scale u (scene velocity units)
 

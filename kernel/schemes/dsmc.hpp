@@ -14,7 +14,7 @@
 //
 // Long cooling runs never underflow: the stored velocities are rescaled to unit temperature (and the
 // centre-of-mass velocity removed) whenever the stored energy has drifted by a factor
-// `rescale_factor`, with the scale kept as log u (core/velocity_scale.hpp).
+// `rescale_factor` (core/velocity_scale.hpp), with the scale kept as log u.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -33,6 +33,7 @@
 #include "kernel/core/ranks.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/core/sym_tensor.hpp"
+#include "kernel/core/velocity_scale.hpp"
 #include "kernel/effects/lagrangian_shear.hpp"
 #include "kernel/effects/step_context.hpp"
 #include "kernel/observe/gas_observation.hpp"
@@ -63,9 +64,6 @@ class BasicDsmc {
  public:
   /// Uniform shear flow (effects/lagrangian_shear.hpp) is in the pack: the pressure tensor is observed.
   static constexpr bool sheared = (std::is_same_v<Effects, LagrangianShear> || ...);
-
-  /// Stored energy may drift by this factor before the velocities are rescaled.
-  static constexpr double rescale_factor = 1.25;
 
   /// A replica held in one process (BatchedBackend), with the scene's kernel.
   BasicDsmc(const Scene& scene, std::uint64_t replica, Effects... effects)

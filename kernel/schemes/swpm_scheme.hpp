@@ -41,6 +41,7 @@
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
+#include "kernel/core/velocity_scale.hpp"
 #include "kernel/observe/speed_histogram.hpp"
 #include "kernel/schemes/initial_state.hpp"
 #include "kernel/schemes/weight_control.hpp"
@@ -70,7 +71,6 @@ class SwpmScheme {
         kernel_(kernel),
         rng_(scene.run.seed, replica),
         alpha_(scene.collision.restitution[0][0]),
-        rescaling_(scene.thermostat.kind == ThermostatKind::none),
         scale_(start.scale),
         control_(static_cast<std::size_t>(scene.histogram.shells), 1.0, scene.weights->particles_per_shell,
                  scene.weights->growth) {
@@ -202,8 +202,9 @@ class SwpmScheme {
     const WeightedParticles::Totals totals = particles_.totals();
     const Vec3 mean = (1.0 / totals.weight) * totals.momentum;
     // theta = m <|c - V|^2> / 3 of the measure (stored units)
-    const double theta = mass_ * (totals.twice_energy / totals.weight - norm2(mean)) / 3.0;
-    if (rescaling_ && (theta > rescale_factor || theta < 1.0 / rescale_factor)) {
+    const double theta = scene_.species[0].mass * (totals.twice_energy / totals.weight - norm2(mean)) / 3.0;
+    const bool cools_freely = scene_.thermostat.kind == ThermostatKind::none;
+    if (cools_freely && (theta > rescale_factor || theta < 1.0 / rescale_factor)) {
       const double s = 1.0 / std::sqrt(theta);
       for (std::size_t k = 0; k < particles_.size(); ++k)
         particles_.set_velocity(k, s * (particles_.velocity(k) - mean));
@@ -260,16 +261,11 @@ class SwpmScheme {
     candidate_prefactor_ = rate_prefactor_ * std::pow(value, kernel_.lambda);
   }
 
-  /// The stored temperature may drift by this factor before a cooling gas is rescaled.
-  static constexpr double rescale_factor = 1.25;
-
   Scene scene_;  // a copy: the scheme may outlive the scene it was built from
   Kernel kernel_;
   RandomStream rng_;
   double alpha_;
-  bool rescaling_;                           // freely cooling: rescaled to unit stored temperature
-  double mass_ = scene_.species.at(0).mass;  // m of theta = m <c^2> / 3
-  VelocityScale scale_;                      // the stored unit: u = sqrt(T(0)), then moved by rescalings
+  VelocityScale scale_;  // the stored unit: u = sqrt(T(0)), then moved by rescalings
   std::uint64_t rescales_ = 0;
   WeightControl control_;
   WeightedParticles particles_;
