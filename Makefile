@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
-.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-8-shear-rate fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-7-shear-rate fig-000-8-shear-rate fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted intruder-cost accuracy-cost bench-effects stability
 
 all: build
@@ -65,6 +65,12 @@ relaxation-bias-003: build
 fig-000-8-shear-rate: build
 	$(PYTHON) drivers/shear_rate_extrapolation.py drivers/scenes/000_fig8_shear_rate/omega0.5.toml \
 		drivers/scenes/000_fig8_shear_rate/omega1.toml --granmc $(GRANMC)
+
+# 000 Fig. 7 at mu = 10, alpha = 1, 0.9, 0.8, 0.7: the same extrapolation, against 000's "around 2 % at
+# alpha = 0.7" (results/000_fig7_shear_rate/; resumes).
+fig-000-7-shear-rate: build
+	$(PYTHON) drivers/shear_rate_extrapolation.py drivers/scenes/000_fig7_shear_rate/mu10.toml \
+		--granmc $(GRANMC) --out results/000_fig7_shear_rate --target fig-000-7-shear-rate
 
 # Paper 002's figures (1D Gillespie intruder).
 fig-002-3 fig-002-4 fig-002-5: fig-002-%: build

@@ -1,15 +1,16 @@
 #!/usr/bin/env python3
-"""The Navier-Stokes viscosity as the limit a* -> 0 of the sheared steady state (issue 4, 000 Fig. 8).
+"""The Navier-Stokes viscosity as the limit a* -> 0 of the sheared steady state (000 Figs. 7-8).
 
 Usage: /usr/bin/python3 drivers/shear_rate_extrapolation.py SWEEP.toml [SWEEP.toml ...]
-           [--granmc build/bin/granmc] [--out results/000_fig8_shear_rate]
+           [--granmc build/bin/granmc] [--out results/000_fig8_shear_rate] [--target fig-000-8-shear-rate]
 
-Each sweep file (drivers/scenes/000_fig8_shear_rate/omega*.toml) runs one mixture at several restitutions
+Each sweep file (drivers/scenes/000_fig8_shear_rate/omega*.toml, 000_fig7_shear_rate/mu10.toml) runs one mixture at several restitutions
 alpha and shear rates a with `granmc sweep` (so a rerun resumes and skips what is done). Uniform shear flow
 is non-Newtonian: eta*(a*) = eta*_NS + c a*^2 + O(a*^4) (the stress is odd in a, so eta is even), and c grows
 with dissipation. Per alpha this fits eta* against a*^2 (weighted least squares over the rates, a* the mean
 reduced shear rate over the averaging window) and reports the intercept, its ratio to the elastic
-intercept, and the first-Sonine theory (`granmc theory`). CIs follow granmc's replica convention
+intercept, and the first-Sonine theory (`granmc theory`); "steady" says whether every rate's run passed
+granmc's plateau test (the summary's viscosity.steady). CIs follow granmc's replica convention
 (3.2 standard errors, p = 0.999); the ratio's CI treats the two intercepts as independent, which
 overstates it (the runs share their seed). Writes OUT/<sweep stem>/ (the sweep's outputs), OUT/table.md
 and OUT/shear_rate.png.
@@ -34,7 +35,7 @@ def window_mean_shear_rate(v):
 
 
 def points_of(sweep_dir):
-    """(alpha, a*, eta*, sigma of eta*, HDF5 file) per finished scene of a sweep's index."""
+    """(alpha, a*, eta*, sigma of eta*, HDF5 file, plateau test passed) per finished scene of a sweep's index."""
     with open(os.path.join(sweep_dir, "index.json")) as f:
         index = json.load(f)
     points = []
@@ -44,7 +45,7 @@ def points_of(sweep_dir):
         with open(os.path.join(sweep_dir, s["summary"])) as f:
             v = json.load(f)["viscosity"]
         points.append((s["values"]["collision.restitution"], window_mean_shear_rate(v), v["eta_star"]["mean"],
-                       v["eta_star"]["ci"] / LAMBDA_P, os.path.join(sweep_dir, s["hdf5"])))
+                       v["eta_star"]["ci"] / LAMBDA_P, os.path.join(sweep_dir, s["hdf5"]), v["steady"]))
     return points
 
 
@@ -77,6 +78,7 @@ def main():
     p.add_argument("sweeps", nargs="+")
     p.add_argument("--granmc", default="build/bin/granmc")
     p.add_argument("--out", default="results/000_fig8_shear_rate")
+    p.add_argument("--target", default="fig-000-8-shear-rate", help="the make target named in the table")
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
 
@@ -85,7 +87,7 @@ def main():
     import matplotlib.pyplot as plt
 
     fig, axes = plt.subplots(1, len(args.sweeps), figsize=(5.5 * len(args.sweeps), 4.5), squeeze=False)
-    lines = ["# eta* against the shear rate, extrapolated to a* -> 0 (`make fig-000-8-shear-rate`)", "",
+    lines = [f"# eta* against the shear rate, extrapolated to a* -> 0 (`make {args.target}`)", "",
              "CI: 3.2 standard errors (p = 0.999). eta*(0): weighted fit eta* = eta*(0) + c a*^2 over the rates.", ""]
     for sweep, ax in zip(args.sweeps, axes[0]):
         stem = os.path.splitext(os.path.basename(sweep))[0]
@@ -94,9 +96,9 @@ def main():
         points = points_of(sweep_dir)
         alphas = sorted({pt[0] for pt in points}, reverse=True)
         lines += [f"## {stem}", "",
-                  "| alpha | a* at each rate | eta* at each rate (CI) | c | eta*(a*->0) | CI | first Sonine eta* "
-                  "| eta(alpha)/eta(1) at the largest rate | extrapolated | CI | first Sonine |",
-                  "|---|---|---|---|---|---|---|---|---|---|---|"]
+                  "| alpha | a* at each rate | eta* at each rate (CI) | steady | c | eta*(a*->0) | CI | first Sonine eta* "
+                  "| eta(alpha)/eta(1) at the largest rate | extrapolated | CI | first Sonine | gap |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         fits = {}
         for alpha in alphas:
             pts = sorted([pt for pt in points if pt[0] == alpha], key=lambda pt: pt[1])
@@ -118,11 +120,15 @@ def main():
                 top = pts[-1][2] / ref[5][-1][2]
                 ratio = b0 / ref[0]
                 ratio_ci = LAMBDA_P * ratio * np.hypot(s0 / b0, ref[1] / ref[0]) if alpha != 1.0 else 0.0
-                tail = f"{top:.4f} | {ratio:.4f} | {ratio_ci:.4f} | {th_ratio:.4f}"
+                gap = (f"{100 * (ratio / th_ratio - 1):+.1f} % ({abs(ratio - th_ratio) / ratio_ci:.1f} CI)"
+                       if alpha != 1.0 else "-")
+                tail = f"{top:.4f} | {ratio:.4f} | {ratio_ci:.4f} | {th_ratio:.4f} | {gap}"
             else:
-                tail = "- | - | - | -"
-            lines.append(f"| {alpha} | {rates} | {etas} | {c:.2f} | {b0:.4f} | {LAMBDA_P * s0:.4f} | {th_star:.4f} "
-                         f"| {tail} |")
+                tail = "- | - | - | - | -"
+            steady = "yes" if all(pt[5] for pt in pts) else "no at a* = " + ", ".join(
+                f"{pt[1]:.3f}" for pt in pts if not pt[5])
+            lines.append(f"| {alpha} | {rates} | {etas} | {steady} | {c:.2f} | {b0:.4f} | {LAMBDA_P * s0:.4f} "
+                         f"| {th_star:.4f} | {tail} |")
         lines.append("")
         ax.set_xlabel("a*^2 (mean over the averaging window)")
         ax.set_ylabel("eta*")
