@@ -29,8 +29,17 @@ intruder.restitution), "needle_correlation" (R of the 2D needle, 002 eq. 34 and 
 "viscosity_over_eta0" (eta/eta0 of one species under shear, 000 Fig. 6 and 003), "viscosity_kinetic_over_eta0",
 "viscosity_star" and "viscosity_kinetic_star" (eta* and eta^k* = nu eta / n T, 000 Figs. 10-12),
 "viscosity_parts_over_eta0" (eta^k/eta0 and eta/eta0 together, 003), "viscosity_parts_star" (eta^k* and
-eta* together, 000 Figs. 10-11). Under shear, "phi" also sets the
+eta* together, 000 Figs. 10-11), "steady_shear" (a* and eta* of the steady shear flow without a thermostat,
+000 sec. 5; a* is the mean over the viscosity window, its CI the mean of the samples' CIs, a bound on the CI
+of the mean). Under shear, "phi" also sets the
 densities to match phi and scales the time with the collision frequency (dense_shear_units).
+
+A viscosity figure with a table `[figure.zero_shear]` (`rate_factors = [0.25, 0.5, 0.708, 1.0]`,
+`replica_factors = [4, 1, 1, 1]`) runs every point at each rate factor times its shear rate, with that many
+times its replicas, and plots the Navier-Stokes limit a* -> 0 (drivers/zero_shear.py: eta against a*^2,
+weighted least squares, CI = 3.2 standard errors of the intercept); the table also lists the value at the
+point's own rate (factor 1), the fitted slope c, the a* of each rate, and whether every run passed granmc's
+plateau test (viscosity.steady).
 """
 import argparse
 import copy
@@ -42,6 +51,8 @@ import sys
 import tomllib
 
 import numpy as np
+
+from zero_shear import LAMBDA_P, fit_intercept, window_mean_shear_rate
 
 
 # ---- scenes ---------------------------------------------------------------------------------------------
@@ -204,13 +215,13 @@ def run_sweep(args, base_path, scenes, base, sweep_dir):
 
 
 def run_points(args, here, fig, curves, bases, scenes, out):
-    """Runs every point (curve index, x) -> scene: one sweep per base scene file, the figure's in OUT/points,
+    """Runs every point (curve index, x[, rate index]) -> scene: one sweep per base scene file, the figure's in OUT/points,
     a curve's own in OUT/points/<its stem>. Returns point -> (summary, HDF5 path)."""
     groups = {}  # base file -> (name in `bases`, {point: scene})
-    for (ci_, x), scene in scenes.items():
-        name = curves[ci_].get("base", "")
+    for point, scene in scenes.items():  # point: (curve index, x) or (curve index, x, rate index)
+        name = curves[point[0]].get("base", "")
         path = os.path.normpath(os.path.join(here, name or fig["base"]))
-        groups.setdefault(path, (name, {}))[1][(ci_, x)] = scene
+        groups.setdefault(path, (name, {}))[1][point] = scene
     figure_base = os.path.normpath(os.path.join(here, fig["base"]))
     results, dirs = {}, set()
     for path, (name, group) in groups.items():
@@ -256,6 +267,11 @@ def simulated(summary, y):
     if y in VISCOSITY_KEYS:
         r = summary["viscosity"][VISCOSITY_KEYS[y]]
         return [("", r["mean"], r["ci"])]
+    if y == "steady_shear":
+        v = summary["viscosity"]
+        a_ci = np.asarray(v["reduced_shear_rate"]["ci"], dtype=float)
+        return [(", a*", window_mean_shear_rate(v), float(np.mean(a_ci[len(a_ci) // 2:]))),
+                (", eta*", v["eta_star"]["mean"], v["eta_star"]["ci"])]
     if y == "cumulants":
         species = summary["species"]
         return [(f", species {sp['name']}" if len(species) > 1 else "", 2.0 * sp["a2_last_half"]["mean"],
@@ -292,6 +308,8 @@ def theoretical(th, y):
             out["first Sonine, HCS"] = [v["first_sonine_cooling_state"][key]]
         elif key in v.get("first_sonine", {}):
             out["first Sonine"] = [v["first_sonine"][key]]
+    elif y == "steady_shear" and "steady_shear" in th:
+        out["Grad"] = [th["steady_shear"]["reduced_shear_rate"], th["steady_shear"]["eta_star"]]
     elif y == "cumulants":
         m = th.get("mixture")
         if m:
@@ -332,9 +350,15 @@ def main():
     x_theory = np.linspace(*fig["x_theory"][:2], int(fig["x_theory"][2]))
     curves = spec["curve"]
 
-    runs = {}  # (curve index, x) -> (summary, HDF5 path)
+    zero_shear = fig.get("zero_shear")
+    if zero_shear and y not in VISCOSITY_KEYS and y not in ("viscosity_parts_over_eta0", "viscosity_parts_star"):
+        sys.exit(f"figure.py: [figure.zero_shear] needs a viscosity quantity, not y = {y!r}")
+    runs = {}  # (curve index, x) or (curve index, x, rate index) -> (summary, HDF5 path)
     if not args.only_theory:
         scenes = {(ci_, x): point_scene(bases, curve, x_name, x) for ci_, curve in enumerate(curves) for x in x_values}
+        if zero_shear:
+            scenes = {point + (k,): at_rate(scene, f, r) for point, scene in scenes.items()
+                      for k, (f, r) in enumerate(zip(zero_shear["rate_factors"], zero_shear["replica_factors"]))}
         runs = run_points(args, here, fig, curves, bases, scenes, out)
 
     results = []
@@ -343,12 +367,17 @@ def main():
         pts = []
         if not args.only_theory:
             for x in x_values:
-                summary, hdf5 = runs[(ci_, x)]
-                pts.append({"x": x, "sim": simulated(summary, y), "wall_seconds": summary["wall_seconds"],
-                            "seed": scenes[(ci_, x)]["run"]["seed"],
-                            "hdf5": os.path.relpath(hdf5, out),
-                            "theory": theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),
-                                                            os.path.join(out, "theory.toml")), y)})
+                if zero_shear:
+                    pt = extrapolated([runs[(ci_, x, k)] for k in range(len(zero_shear["rate_factors"]))],
+                                      zero_shear["rate_factors"], y, out)
+                else:
+                    summary, hdf5 = runs[(ci_, x)]
+                    pt = {"sim": simulated(summary, y), "wall_seconds": summary["wall_seconds"],
+                          "hdf5": os.path.relpath(hdf5, out)}
+                pt.update({"x": x, "seed": next(sc for p_, sc in scenes.items() if p_[:2] == (ci_, x))["run"]["seed"],
+                           "theory": theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),
+                                                           os.path.join(out, "theory.toml")), y)})
+                pts.append(pt)
         lines = [theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),
                                        os.path.join(out, "theory.toml")), y) for x in x_theory]
         results.append({"label": curve["label"], "points": pts, "theory_x": list(x_theory), "theory": lines})
@@ -362,6 +391,32 @@ def main():
     write_table(fig, results, os.path.join(out, "table.md"))
     plot(fig, results, os.path.join(out, "figure.png"))
     print(f"wrote {out}/figure.png, {out}/table.md, {out}/figure.json")
+
+
+def at_rate(scene, rate_factor, replica_factor):
+    """A point's scene at rate_factor times its shear rate, with replica_factor times its replicas."""
+    scene = copy.deepcopy(scene)
+    scene["shear"]["rate"] *= rate_factor
+    scene["run"]["replicas"] *= replica_factor
+    return scene
+
+
+def extrapolated(runs, rate_factors, y, out):
+    """One point from its runs at several shear rates: per series, the intercept of eta against a*^2
+    (drivers/zero_shear.py) with its CI, and what the table shows beside it."""
+    sims = [simulated(summary, y) for summary, _ in runs]
+    viscosities = [summary["viscosity"] for summary, _ in runs]
+    a_star = [window_mean_shear_rate(v) for v in viscosities]
+    sim, slopes = [], []
+    for s, (suffix, _, _) in enumerate(sims[0]):
+        b0, sigma0, c = fit_intercept(a_star, [r[s][1] for r in sims], [r[s][2] / LAMBDA_P for r in sims])
+        sim.append((suffix, b0, LAMBDA_P * sigma0))
+        slopes.append(c)
+    own = rate_factors.index(1.0)
+    return {"sim": sim, "wall_seconds": sum(summary["wall_seconds"] for summary, _ in runs),
+            "hdf5": [os.path.relpath(h, out) for _, h in runs],
+            "zero_shear": {"a_star": a_star, "c": slopes, "at_own_rate": sims[own],
+                           "steady": all(v["steady"] for v in viscosities)}}
 
 
 def normalise(results):
@@ -391,13 +446,21 @@ def relative_to_curve(results, label):
         if c is ref:
             continue
         for pt, r in zip(c["points"], ref["points"]):
-            pt["sim"] = [(suf, m / rm, abs(m / rm) * np.hypot(e / m, re / rm))  # a half-width, >= 0
-                         for (suf, m, e), (_, rm, re) in zip(pt["sim"], r["sim"])]
+            pt["sim"] = ratio_series(pt["sim"], r["sim"])
+            if "zero_shear" in pt:
+                pt["zero_shear"]["at_own_rate"] = ratio_series(pt["zero_shear"]["at_own_rate"],
+                                                               r["zero_shear"]["at_own_rate"])
             pt["theory"] = {k: [v / w for v, w in zip(vals, r["theory"][k])] for k, vals in pt["theory"].items()}
         c["theory"] = [{k: [v / w for v, w in zip(vals, rl[k])] for k, vals in line.items()}
                        for line, rl in zip(c["theory"], ref["theory"])]
         out.append(c)
     return out
+
+
+def ratio_series(sim, ref):
+    """[(suffix, m / m_ref, CI)] with the CIs combined as for independent runs."""
+    return [(suf, m / rm, abs(m / rm) * np.hypot(e / m, re / rm))  # a half-width, >= 0
+            for (suf, m, e), (_, rm, re) in zip(sim, ref)]
 
 
 def seed_note(results):
@@ -415,15 +478,31 @@ def write_table(fig, results, path):
         f.write(f"# {fig['paper']}: {fig['caption']}\n\n")
         if any(c["points"] for c in results):
             f.write(seed_note(results))
-        f.write("| curve | x | quantity | granmc | CI | " + " | ".join(approximations(results)) + " | seed | run (s) |\n")
-        f.write("|---|---|---|---|---|" + "---|" * len(approximations(results)) + "---|---|\n")
+        zero_shear = "zero_shear" in fig
+        if zero_shear:
+            z = fig["zero_shear"]
+            f.write(f"granmc: the limit a* -> 0 of runs at {', '.join(f'{r:g}' for r in z['rate_factors'])} times the "
+                    f"point's shear rate ({', '.join(str(r) for r in z['replica_factors'])} times its replicas), "
+                    "fitted as eta = eta(0) + c a*^2 (c of the curve's own eta, before any division by a reference curve); \"own rate\": the run at the point's rate; a*: each rate's "
+                    "mean over the window; steady: every run passed the plateau test.\n\n")
+        extra = " own rate | CI | c | a* | steady |" if zero_shear else ""
+        f.write("| curve | x | quantity | granmc | CI | " + " | ".join(approximations(results)) + f" |{extra} seed "
+                "| run (s) |\n")
+        f.write("|---|---|---|---|---|" + "---|" * (len(approximations(results)) + (5 if zero_shear else 0))
+                + "---|---|\n")
         for c in results:
             for pt in c["points"]:
                 for s, (suffix, m, e) in enumerate(pt["sim"]):
                     th = [fmt(pt["theory"].get(a, [None] * (s + 1))[s] if s < len(pt["theory"].get(a, [])) else None)
                           for a in approximations(results)]
+                    cells = ""
+                    if zero_shear:
+                        zs = pt["zero_shear"]
+                        _, m1, e1 = zs["at_own_rate"][s]
+                        cells = (f" {m1:.4f} | {e1:.4f} | {zs['c'][s]:.2f} | "
+                                 f"{', '.join(f'{a:.3f}' for a in zs['a_star'])} | {'yes' if zs['steady'] else 'no'} |")
                     f.write(f"| {c['label']} | {pt['x']:g} | {fig['y']}{suffix} | {m:.4f} | {e:.4f} | "
-                            + " | ".join(th) + f" | {pt['seed']} | {pt['wall_seconds']:.0f} |\n")
+                            + " | ".join(th) + f" |{cells} {pt['seed']} | {pt['wall_seconds']:.0f} |\n")
 
 
 def approximations(results):
@@ -446,7 +525,7 @@ def plot(fig, results, path):
     import matplotlib.pyplot as plt
 
     styles = {"equilibrium, R = 1": ":", "Maxwellian": ":", "first Sonine": "-", "second Sonine": "--", "exact": "-",
-              "Gaussian bath, eq. 22": "--", "first Sonine, HSS": "-", "first Sonine, HCS": "--"}
+              "Gaussian bath, eq. 22": "--", "first Sonine, HSS": "-", "first Sonine, HCS": "--", "Grad": "-"}
     markers = ["o", "s", "^", "D", "v"]
     f, ax = plt.subplots(figsize=(6.4, 4.8))
     series = 0
@@ -461,8 +540,13 @@ def plot(fig, results, path):
                 xs = [pt["x"] for pt in c["points"]]
                 ms = [pt["sim"][s][1] for pt in c["points"]]
                 es = [pt["sim"][s][2] for pt in c["points"]]
+                own = "zero_shear" in c["points"][0]
                 ax.errorbar(xs, ms, yerr=es, fmt=markers[ci_ % len(markers)], color=colour, capsize=3,
-                            label=f"granmc, {c['label']}{suffix}")
+                            label=f"granmc{', a* -> 0' if own else ''}, {c['label']}{suffix}")
+                if own:
+                    ax.plot(xs, [pt["zero_shear"]["at_own_rate"][s][1] for pt in c["points"]],
+                            markers[ci_ % len(markers)], mfc="none", color=colour,
+                            label=f"granmc at the point's rate, {c['label']}{suffix}")
             for approx in approximations(results):
                 ys = [line[approx][s] if approx in line and s < len(line[approx]) else np.nan for line in c["theory"]]
                 if np.all(np.isnan(ys)):

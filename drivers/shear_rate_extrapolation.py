@@ -24,14 +24,7 @@ import tempfile
 import numpy as np
 
 from results import open_results
-
-LAMBDA_P = 3.2  # granmc's CI half-width in standard errors (docs/physics.md, replica statistics)
-
-
-def window_mean_shear_rate(v):
-    """Mean reduced shear rate a* over the samples of the viscosity window (the last half)."""
-    a = np.asarray(v["reduced_shear_rate"]["mean"], dtype=float)
-    return float(np.mean(a[len(a) // 2:]))
+from zero_shear import LAMBDA_P, fit_intercept, window_mean_shear_rate
 
 
 def points_of(sweep_dir):
@@ -47,16 +40,6 @@ def points_of(sweep_dir):
         points.append((s["values"]["collision.restitution"], window_mean_shear_rate(v), v["eta_star"]["mean"],
                        v["eta_star"]["ci"] / LAMBDA_P, os.path.join(sweep_dir, s["hdf5"]), v["steady"]))
     return points
-
-
-def fit_intercept(a_star, eta, sigma):
-    """Weighted least squares eta = b0 + b1 a*^2; returns (b0, sigma_b0, b1)."""
-    x = np.asarray(a_star) ** 2
-    A = np.vstack([np.ones_like(x), x]).T
-    w = 1.0 / np.asarray(sigma) ** 2
-    cov = np.linalg.inv(A.T @ (A * w[:, None]))
-    b = cov @ A.T @ (w * np.asarray(eta))
-    return float(b[0]), float(np.sqrt(cov[0, 0])), float(b[1])
 
 
 def theory(granmc, hdf5):
