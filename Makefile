@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
-.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-7-shear-rate fig-000-8-shear-rate fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-7-shear-rate fig-000-8-shear-rate fig-000-sec5 fig-000-6-elastic fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-1 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted intruder-cost accuracy-cost bench-effects stability
 
 all: build
@@ -46,7 +46,15 @@ fig-000-2: build
 	$(PYTHON) drivers/plot_delta.py results/000_fig2/fig2.h5 results/000_fig2/figure.png \
 	  --theory-json results/000_fig2/theory.json --table results/000_fig2/table.md
 
-figures-000: fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12
+# 000 Fig. 6 at alpha = 1 with a CI below 0.005: the converged Chapman-Enskog 1.016 against the first-Sonine 1.
+fig-000-6-elastic: build
+	$(PYTHON) drivers/figure.py drivers/scenes/000_fig6_elastic/figure.toml --granmc $(GRANMC)
+
+# 000 sec. 5: the steady shear flow without a thermostat, a* and eta* against alpha with Grad's solution.
+fig-000-sec5: build
+	$(PYTHON) drivers/figure.py drivers/scenes/000_sec5/figure.toml --granmc $(GRANMC)
+
+figures-000: fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-sec5
 
 # Paper 003: eta^k/eta0 and eta/eta0 against phi in the modified shear flow (results/003_viscosity/).
 fig-003: build
@@ -72,6 +80,11 @@ fig-000-7-shear-rate: build
 	$(PYTHON) drivers/shear_rate_extrapolation.py drivers/scenes/000_fig7_shear_rate/mu10.toml \
 		--granmc $(GRANMC) --out results/000_fig7_shear_rate --target fig-000-7-shear-rate
 
+# Paper 002 Figs. 1-2: the Gaussian bath's collision flux and the law of the colliding velocities, from
+# `granmc bath` against 002 eqs. 14, 19-20 (drivers/plot_bath.py; results/002_fig1/, a few seconds).
+fig-002-1: build
+	$(PYTHON) drivers/plot_bath.py drivers/scenes/002_fig1/bath.toml --granmc $(GRANMC)
+
 # Paper 002's figures (1D Gillespie intruder).
 fig-002-3 fig-002-4 fig-002-5: fig-002-%: build
 	$(PYTHON) drivers/figure.py drivers/scenes/002_fig$*/figure.toml --granmc $(GRANMC)
@@ -86,7 +99,7 @@ fig-002-8: build
 	$(GRANMC) run drivers/scenes/002_fig8/needle.toml --out results/002_fig8/needle.h5 --summary results/002_fig8/needle.json
 	$(PYTHON) drivers/plot_needle_angular.py results/002_fig8/needle.h5 results/002_fig8
 
-figures-002: fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8
+figures-002: fig-002-1 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8
 
 # Work-precision (docs/accuracy-cost.md): 001 Example 3 against particles, replicas, dt, method and storage;
 # the early-time Haff slope against particles and dt; the recommendation table.

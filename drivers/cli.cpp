@@ -8,6 +8,8 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -17,6 +19,7 @@
 #include "io/output_schema.hpp"
 #include "io/scene_file.hpp"
 #include "io/theory_json.hpp"
+#include "kernel/analysis/bath_probe.hpp"
 #include "kernel/schemes/rank_wave_backend.hpp"
 #include "kernel/setup/explain.hpp"
 #include "kernel/setup/run_plan.hpp"
@@ -151,6 +154,50 @@ int theory_command(const std::string& path) {
   return exit_ok;
 }
 
+struct BathArgs {
+  std::string scene;
+  std::vector<double> v1{-2.0, -1.0, 0.0, 1.0, 2.0};
+  std::uint64_t samples = 100000;
+  std::vector<double> range{-4.0, 4.0};
+  int bins = 80;
+};
+
+/// `granmc bath`: the fluxes and the sampled g_+ of an intruder scene's bath (kernel/analysis/bath_probe.hpp),
+/// as JSON.
+int bath_command(const BathArgs& args) {
+  const std::optional<CheckedScene> checked = checked_scene(args.scene, std::nullopt);
+  if (!checked) return exit_bad_input;
+  if (place().rank != 0) return exit_ok;
+  std::vector<double> edges;
+  for (int b = 0; b <= args.bins; ++b) edges.push_back(args.range[0] + (args.range[1] - args.range[0]) * b / args.bins);
+  auto probe = [&](const auto& bath) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const BathProbePoint& p : probe_bath(bath, args.v1, args.samples, edges, checked->scene.run.seed))
+      points.push_back({{"v1", p.v1},
+                        {"flux_right", p.flux_right},
+                        {"flux_left", p.flux_left},
+                        {"acceptance", static_cast<double>(args.samples) / static_cast<double>(p.attempts)},
+                        {"g_right_density", p.density},
+                        {"g_right_outside", p.outside}});
+    return nlohmann::json{
+        {"bath", bath.name},       {"a", bath.a},    {"density", bath.rho}, {"temperature", bath.temperature()},
+        {"samples", args.samples}, {"edges", edges}, {"points", points}};
+  };
+  const auto bath_of = [](const SchemeChoice& s) -> std::optional<BathChoice> {
+    if (const auto* p = std::get_if<IntruderLinePlan>(&s)) return p->bath;
+    if (const auto* p = std::get_if<IntruderDsmcPlan>(&s)) return p->bath;
+    if (const auto* p = std::get_if<NeedlePlan>(&s)) return BathChoice{p->bath};
+    return std::nullopt;
+  };
+  const std::optional<BathChoice> bath = bath_of(checked->plan.scheme);
+  if (!bath) {
+    std::fprintf(stderr, "granmc bath: %s has no [intruder] table, so no bath to probe\n", args.scene.c_str());
+    return exit_bad_input;
+  }
+  std::cout << std::visit(probe, *bath).dump(1) << "\n";
+  return exit_ok;
+}
+
 }  // namespace
 
 int cli_main(int argc, char** argv) {
@@ -193,6 +240,16 @@ int cli_main(int argc, char** argv) {
   CLI::App* theory_cmd = app.add_subcommand("theory", "Print the theory predictions that apply to a scene (JSON)");
   theory_cmd->add_option("scene", theory_scene, "Scene file (TOML)")->required();
 
+  BathArgs bath;
+  CLI::App* bath_cmd = app.add_subcommand(
+      "bath", "Print the collision fluxes and the sampled law g_+ of an intruder scene's bath (JSON, 002 Figs. 1-2)");
+  bath_cmd->add_option("scene", bath.scene, "Scene file with an [intruder] table (TOML)")->required();
+  bath_cmd->add_option("--v1", bath.v1, "Intruder velocities (default: -2 -1 0 1 2)");
+  bath_cmd->add_option("--samples", bath.samples, "Draws from g_+ at each v1 (default 100000)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+  bath_cmd->add_option("--range", bath.range, "Histogram range of the bath velocity (default: -4 4)")->expected(2);
+  bath_cmd->add_option("--bins", bath.bins, "Histogram bins (default 80)")->check(CLI::Range(1, 1000000));
+
   // Help, version and parse errors: printed by rank 0 only (every rank parses the same arguments).
   std::ostream quiet(nullptr);
   const bool root = place().rank == 0;
@@ -212,6 +269,7 @@ int cli_main(int argc, char** argv) {
   }
   if (*run_cmd) return run_command(run);
   if (*sweep_cmd) return sweep_command(sweep);
+  if (*bath_cmd) return bath_command(bath);
   if (*format_cmd) {
     if (place().rank == 0) std::cout << output_format_page();
     return exit_ok;

@@ -6,6 +6,7 @@
 #include "kernel/theory/mixture_viscosity.hpp"
 #include "kernel/theory/sonine.hpp"
 #include "kernel/theory/sonine_hcs.hpp"
+#include "kernel/theory/steady_shear.hpp"
 #include "kernel/theory/viscosity.hpp"
 #include "kernel/theory/white_noise.hpp"
 
@@ -192,6 +193,29 @@ void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlo
   }
 }
 
+/// The steady uniform shear flow without a thermostat (000 sec. 5): a dilute inelastic gas of one species of
+/// hard spheres, Grad's solution (theory/steady_shear.hpp).
+void add_steady_shear(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
+                      nlohmann::json& applies) {
+  if (scene.run.method != Method::dsmc || scene.shear_rate == 0.0 || scene.species.size() != 1 ||
+      scene.collision.kernel != CollisionKernel::hard_sphere || scene.collision.packing_fraction > 0.0 ||
+      scene.thermostat.kind != ThermostatKind::none || scene.relaxation || scene.collision.restitution[0][0] >= 1.0)
+    return;
+  const SpeciesConfig& sp = scene.species[0];
+  const theory::SteadyShearFlow s = theory::steady_shear_grad(scene.collision.restitution[0][0]);
+  j["steady_shear"] = {{"approximation", "Grad 13-moment (Santos, Garzo and Dufty, PRE 69, 061303, 2004)"},
+                       {"reduced_shear_rate", s.shear_rate_star},
+                       {"shear_rate_over_nu0", s.shear_rate_nu0},
+                       {"eta_star", s.eta_star},
+                       {"eta_over_eta0", s.eta_over_eta0},
+                       {"pressure_xx_over_p", s.pressure_xx},
+                       {"pressure_yy_over_p", s.pressure_yy},
+                       {"pressure_xy_over_p", s.pressure_xy},
+                       {"temperature", theory::steady_shear_temperature(s, std::fabs(scene.shear_rate), sp.density,
+                                                                        sp.diameter, sp.mass)}};
+  applies.push_back("steady uniform shear flow without thermostat, dilute hard spheres: Grad's solution (000 sec. 5)");
+}
+
 }  // namespace
 
 nlohmann::json scene_theory_json(const Scene& scene) {
@@ -199,8 +223,8 @@ nlohmann::json scene_theory_json(const Scene& scene) {
   j["scene"] = scene.source_path;
   nlohmann::json applies = nlohmann::json::array();
   const std::vector<double> times = sample_times(scene.run);
-  for (auto add :
-       {add_cooling_state, add_scaled_state, add_mixture, add_intruder, add_kernel_form, add_enskog_chi, add_viscosity})
+  for (auto add : {add_cooling_state, add_scaled_state, add_mixture, add_intruder, add_kernel_form, add_enskog_chi,
+                   add_viscosity, add_steady_shear})
     add(scene, times, j, applies);
   j["applies"] = applies;
   return j;

@@ -1,9 +1,11 @@
 // The command line: a bad scene or bad arguments exit with status 2 before any work, with one message
 // on stderr naming the file and the key, and leave no output file; a good run exits 0 and writes both
 // outputs atomically (SCENES.md, "Command line").
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -87,6 +89,34 @@ TEST_F(Cli, TheoryPrintsJsonForTheScene) {
   EXPECT_EQ(o.status, 0) << o.stderr_text;
   EXPECT_NE(o.stdout_text.find("\"cooling_state\""), std::string::npos);
   EXPECT_NE(o.stdout_text.find("\"a2_second_sonine\""), std::string::npos);
+}
+
+TEST_F(Cli, BathPrintsTheIntrudersFluxesAndSampledLaw) {  // 002 Figs. 1-2 (drivers/plot_bath.py)
+  write("bath.toml", R"([run]
+method = "gillespie"
+t_end = 1.0
+samples = 1
+[intruder]
+bath = "gaussian"
+bath_a = 2.0
+bath_density = 1.5
+)");
+  const Outcome o = granmc("bath bath.toml --v1 0 1.5 --samples 20000 --range -3 0 --bins 30");
+  ASSERT_EQ(o.status, 0) << o.stderr_text;
+  const nlohmann::json j = nlohmann::json::parse(o.stdout_text);
+  ASSERT_EQ(j["points"].size(), 2u);
+  // phi_+(0) = rho / (2 sqrt(pi a)) (002 eq. 19); phi_-(v1) = phi_+(-v1).
+  EXPECT_NEAR(j["points"][0]["flux_right"].get<double>(), 1.5 / (2.0 * std::sqrt(std::numbers::pi * 2.0)), 1e-12);
+  EXPECT_DOUBLE_EQ(j["points"][0]["flux_left"].get<double>(), j["points"][0]["flux_right"].get<double>());
+  // At v1 = 0 every draw is v <= 0, inside [-3, 0] but for the far tail: the density integrates to 1.
+  double mass = 0.0;
+  for (double d : j["points"][0]["g_right_density"]) mass += d * 0.1;
+  EXPECT_NEAR(mass, 1.0, 1e-9 + static_cast<double>(j["points"][0]["g_right_outside"].get<int>()) / 20000.0);
+  // A scene without an intruder has no bath: exit 2, saying so.
+  write("gas.toml", good_scene);
+  const Outcome none = granmc("bath gas.toml");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.stderr_text.find("no bath"), std::string::npos) << none.stderr_text;
 }
 
 TEST_F(Cli, ExplainPrintsThePlanAndRunsNothing) {

@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -5,6 +6,7 @@
 
 #include "kernel/collide/enskog_chi.hpp"
 #include "kernel/theory/sonine.hpp"
+#include "kernel/theory/steady_shear.hpp"
 #include "kernel/theory/viscosity.hpp"
 
 // First-Sonine Navier-Stokes shear viscosity (kernel/theory/viscosity.hpp, docs/derivations/viscosity.md).
@@ -167,4 +169,51 @@ TEST(ViscosityTheory, ReducedViscosityOfFigures10To12) {
         EXPECT_NEAR(mixture_thermal_speed(T, m, m), std::sqrt(4.0 * T / m), 1e-14 * std::sqrt(T / m));
       }
   EXPECT_NEAR(mixture_thermal_speed(1.0, 4.0, 1.0), std::sqrt(2.5), 1e-15);
+}
+
+// Steady uniform shear flow without a thermostat, Grad's solution (kernel/theory/steady_shear.hpp).
+
+TEST(SteadyShearTheory, ElasticLimitIsEquilibrium) {
+  const SteadyShearFlow s = steady_shear_grad(1.0);
+  EXPECT_EQ(s.shear_rate_nu0, 0.0);
+  EXPECT_EQ(s.eta_over_eta0, 1.0);
+  EXPECT_EQ(s.pressure_xx, 1.0);
+  EXPECT_EQ(s.pressure_yy, 1.0);
+}
+
+TEST(SteadyShearTheory, IsTheEndOfTheGradMomentEquations) {
+  // The moment equations the closed form solves, integrated in time from equilibrium (RK4) at a fixed shear
+  // rate a, with nu0 = (16/5) n sigma^2 sqrt(pi T / m) following T = tr P / 3 (n = sigma = m = 1):
+  //   dP_xx/dt = -2 a P_xy - nu0 [beta (P_xx - p) + zeta p],  dP_yy/dt = -nu0 [beta (P_yy - p) + zeta p],
+  //   dP_xy/dt = -a P_yy - nu0 beta P_xy,  P_zz = P_yy.
+  for (double alpha : {0.5, 0.7, 0.9}) {
+    const double beta = (1.0 + alpha) * (3.0 - alpha) / 4.0, zeta = 5.0 / 12.0 * (1.0 - alpha * alpha);
+    const double a = 2.0;
+    auto rate = [&](const std::array<double, 3>& P) {
+      const double p = (P[0] + 2.0 * P[1]) / 3.0, nu0 = 3.2 * std::sqrt(std::numbers::pi * p);
+      return std::array<double, 3>{-2.0 * a * P[2] - nu0 * (beta * (P[0] - p) + zeta * p),
+                                   -nu0 * (beta * (P[1] - p) + zeta * p), -a * P[1] - nu0 * beta * P[2]};
+    };
+    std::array<double, 3> P{1.0, 1.0, 0.0};
+    const double dt = 1e-3;
+    for (int step = 0; step < 200000; ++step) {
+      auto add = [&](const std::array<double, 3>& k, double f) {
+        return std::array<double, 3>{P[0] + f * k[0], P[1] + f * k[1], P[2] + f * k[2]};
+      };
+      const auto k1 = rate(P), k2 = rate(add(k1, dt / 2)), k3 = rate(add(k2, dt / 2)), k4 = rate(add(k3, dt));
+      for (int i = 0; i < 3; ++i) P[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    }
+    const double p = (P[0] + 2.0 * P[1]) / 3.0, nu0 = 3.2 * std::sqrt(std::numbers::pi * p);
+    const SteadyShearFlow s = steady_shear_grad(alpha);
+    EXPECT_NEAR(a / nu0, s.shear_rate_nu0, 1e-9) << alpha;
+    EXPECT_NEAR(P[0] / p, s.pressure_xx, 1e-9) << alpha;
+    EXPECT_NEAR(P[1] / p, s.pressure_yy, 1e-9) << alpha;
+    EXPECT_NEAR(P[2] / p, s.pressure_xy, 1e-9) << alpha;
+    EXPECT_NEAR(-P[2] / a * nu0 / p, s.eta_over_eta0, 1e-9) << alpha;
+    EXPECT_NEAR(p, steady_shear_temperature(s, a, 1.0, 1.0, 1.0), 1e-9) << alpha;
+    // granmc's a* and eta* (000's nu = sqrt(pi) n sigma^2 sqrt(2 T / m)).
+    const double nu = std::sqrt(std::numbers::pi) * std::sqrt(2.0 * p);
+    EXPECT_NEAR(a / nu, s.shear_rate_star, 1e-9) << alpha;
+    EXPECT_NEAR(-P[2] / a * nu / p, s.eta_star, 1e-9) << alpha;
+  }
 }
