@@ -447,9 +447,10 @@ def relative_to_curve(results, label):
             continue
         for pt, r in zip(c["points"], ref["points"]):
             pt["sim"] = ratio_series(pt["sim"], r["sim"])
-            if "zero_shear" in pt:
+            if "zero_shear" in pt:  # a ratio is steady when both its runs are
                 pt["zero_shear"]["at_own_rate"] = ratio_series(pt["zero_shear"]["at_own_rate"],
                                                                r["zero_shear"]["at_own_rate"])
+                pt["zero_shear"]["steady"] = pt["zero_shear"]["steady"] and r["zero_shear"]["steady"]
             pt["theory"] = {k: [v / w for v, w in zip(vals, r["theory"][k])] for k, vals in pt["theory"].items()}
         c["theory"] = [{k: [v / w for v, w in zip(vals, rl[k])] for k, vals in line.items()}
                        for line, rl in zip(c["theory"], ref["theory"])]
