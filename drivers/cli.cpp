@@ -186,7 +186,7 @@ int bath_command(const BathArgs& args) {
   const auto bath_of = [](const SchemeChoice& s) -> std::optional<BathChoice> {
     if (const auto* p = std::get_if<IntruderLinePlan>(&s)) return p->bath;
     if (const auto* p = std::get_if<IntruderDsmcPlan>(&s)) return p->bath;
-    if (const auto* p = std::get_if<NeedlePlan>(&s)) return BathChoice{p->bath};
+    if (const auto* p = std::get_if<NeedlePlan>(&s)) return p->bath;
     return std::nullopt;
   };
   const std::optional<BathChoice> bath = bath_of(checked->plan.scheme);

@@ -28,6 +28,35 @@ struct GaussianBath {
 
   [[nodiscard]] double temperature() const noexcept { return 0.5 / a; }  // T_B (m = 1)
 
+  /// phihat(y) = exp(-y^2) / sqrt(pi) + y erf(y): phi(u) = phi_+(u) + phi_-(u) in units of rho / sqrt(a),
+  /// y = sqrt(a) u (002 eq. 20). For the needle (collide/needle_flux.hpp).
+  static double unit_flux(double y) noexcept {
+    return std::exp(-y * y) / std::sqrt(std::numbers::pi) + y * std::erf(y);
+  }
+
+  /// Phihat(y, s): the mean of phihat over [y - s, y + s], i.e. the needle's total flux Phi in units of
+  /// rho L / sqrt(a) (002 eq. 26 for general a and L, docs/derivations/needle.md). Evaluated without cancellation: a
+  /// Taylor series for s < 1e-2 (next term below 3e-15), the sum Ghat(s + |y|) + Ghat(s - |y|) of positive terms for
+  /// |y| <= s, and for |y| > s the split Ghat(z) = z^2 / 2 + 1/4 + T(z) (z >= 0), whose polynomial part differences to
+  /// 2 |y| s exactly.
+  static double unit_total_flux(double y, double s) noexcept {
+    const double inv_sqrt_pi = 1.0 / std::sqrt(std::numbers::pi);
+    y = std::fabs(y);
+    if (s < 1e-2) {
+      const double e = 2.0 * inv_sqrt_pi * std::exp(-y * y);  // phihat''(y)
+      const double s2 = s * s;
+      return unit_flux(y) + e * s2 / 6.0 + e * (4.0 * y * y - 2.0) * s2 * s2 / 120.0;
+    }
+    if (y <= s) {
+      auto g = [&](double z) { return (0.5 * z * z + 0.25) * std::erf(z) + 0.5 * inv_sqrt_pi * z * std::exp(-z * z); };
+      return (g(s + y) + g(s - y)) / (2.0 * s);
+    }
+    auto tail = [&](double z) {
+      return -(0.5 * z * z + 0.25) * std::erfc(z) + 0.5 * inv_sqrt_pi * z * std::exp(-z * z);
+    };
+    return y + (tail(y + s) - tail(y - s)) / (2.0 * s);
+  }
+
   /// phi_+(v1), 002 eq. (19): (rho / (2 sqrt a)) (x1 erfc(-x1) + exp(-x1^2) / sqrt(pi)), x1 = sqrt(a) v1.
   [[nodiscard]] double flux_right(double v1) const noexcept {
     const double x1 = std::sqrt(a) * v1;

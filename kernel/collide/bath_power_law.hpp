@@ -14,6 +14,11 @@
 //           k = (1 + sqrt 2) / 2 = max (1 + z^2) / (1 + z^4); draw z from the mixture E (a Cauchy piece of
 //           weight x1 k pi, or the exact z / (1 + z^4) piece of weight pi / 4), accept with h(z) / E(z);
 //           acceptance >= 0.58.
+// For the needle (collide/needle_flux.hpp, docs/derivations/needle.md, "Power-law bath"): the flux on both
+// sides phi(u) = (rho / sqrt a) phihat(sqrt(a) u) and its mean over a window, from
+//   phihat(y) = (sqrt 2 / pi) [2 |y| A(|y|) + atan(1 / y^2)],
+//   Ghat(z) = (sqrt 2 / pi) [z^2 A(z) + B(z) + z atan(1 / z^2)] (odd, Ghat' = phihat), B(z) = int_0^z t^2 dt / (1 +
+//   t^4).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -36,6 +41,62 @@ struct PowerLawBath {
     constexpr double r2 = std::numbers::sqrt2;
     return (std::log((x * x + r2 * x + 1.0) / (x * x - r2 * x + 1.0)) / (4.0 * r2) +
             (std::atan(r2 * x + 1.0) + std::atan(r2 * x - 1.0)) / (2.0 * r2));
+  }
+
+  /// B(x) = int_0^x t^2 dt / (1 + t^4), odd in x.
+  static double quartic_square_integral(double x) noexcept {
+    constexpr double r2 = std::numbers::sqrt2;
+    return (-std::log((x * x + r2 * x + 1.0) / (x * x - r2 * x + 1.0)) / (4.0 * r2) +
+            (std::atan(r2 * x + 1.0) + std::atan(r2 * x - 1.0)) / (2.0 * r2));
+  }
+
+  /// phihat(y): phi(u) = phi_+(u) + phi_-(u) in units of rho / sqrt(a), y = sqrt(a) u; even and convex,
+  /// phihat'' = 2 (sqrt 2 / pi) / (1 + y^4).
+  static double unit_flux(double y) noexcept {
+    y = std::fabs(y);
+    return std::numbers::sqrt2 / std::numbers::pi * (2.0 * y * quartic_integral(y) + std::atan2(1.0, y * y));
+  }
+
+  /// Phihat(y, s): the mean of phihat over [y - s, y + s] (the needle's total flux in units of rho L / sqrt a).
+  /// As for the Gaussian bath (collide/bath_gaussian.hpp): a Taylor series for s < 1e-2 (within 1e-14),
+  /// Ghat(s + |y|) + Ghat(s - |y|) of positive terms for |y| <= s, and for |y| > s the split
+  /// Ghat(z) = (z^2 + 1) / 2 + T(z), z >= 0, whose polynomial part differences to 2 |y| s exactly, with
+  /// T(z) = (sqrt 2 / pi) [z atan(1 / z^2) - z^2 R1(z) - R2(z)], R1 = int_z^inf dt / (1 + t^4),
+  /// R2 = int_z^inf t^2 dt / (1 + t^4) (alternating series in z^-4 for z > 2).
+  static double unit_total_flux(double y, double s) noexcept {
+    constexpr double c = std::numbers::sqrt2 / std::numbers::pi;
+    y = std::fabs(y);
+    if (s < 1e-2) {
+      const double y2 = y * y, q = 1.0 + y2 * y2;
+      const double second = 2.0 * c / q;                                                // phihat''
+      const double fourth = 2.0 * c * (20.0 * y2 * y2 * y2 - 12.0 * y2) / (q * q * q);  // phihat''''
+      const double s2 = s * s;
+      return unit_flux(y) + second * s2 / 6.0 + fourth * s2 * s2 / 120.0;
+    }
+    auto g = [&](double z) {  // Ghat(z), z >= 0
+      return c * (z * z * quartic_integral(z) + quartic_square_integral(z) + z * std::atan2(1.0, z * z));
+    };
+    if (y <= s) return (g(s + y) + g(s - y)) / (2.0 * s);
+    auto tail = [&](double z) {                                                         // T(z), z >= 0
+      constexpr double half_integral = std::numbers::pi / (2.0 * std::numbers::sqrt2);  // A(inf) = B(inf)
+      double r1, r2;
+      if (z > 2.0) {
+        const double q = 1.0 / (z * z * z * z);
+        double term = 1.0, sum1 = 0.0, sum2 = 0.0;
+        for (int k = 0; k < 30 && term > 1e-18; ++k, term *= q) {
+          const double sign = k % 2 == 0 ? 1.0 : -1.0;
+          sum1 += sign * term / (4.0 * k + 3.0);
+          sum2 += sign * term / (4.0 * k + 1.0);
+        }
+        r1 = sum1 / (z * z * z);
+        r2 = sum2 / z;
+      } else {
+        r1 = half_integral - quartic_integral(z);
+        r2 = half_integral - quartic_square_integral(z);
+      }
+      return c * (z * std::atan2(1.0, z * z) - z * z * r1 - r2);
+    };
+    return y + (tail(y + s) - tail(y - s)) / (2.0 * s);
   }
 
   /// phi_+(v1) (002 eq. 5 with eq. 23).

@@ -36,6 +36,7 @@
 #include <numbers>
 
 #include "kernel/collide/bath_gaussian.hpp"
+#include "kernel/collide/bath_power_law.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 
@@ -57,36 +58,12 @@ struct NeedleState {
   [[nodiscard]] double normal_velocity() const noexcept { return vy * std::cos(theta) - vx * std::sin(theta); }
 };
 
+/// The needle in a bath whose normal-velocity marginal is the 1D law of Bath (GaussianBath, 002 eq. 18, or
+/// PowerLawBath, 002 eq. 23): Bath::unit_flux and Bath::unit_total_flux give phi and Phi in scaled units.
+template <class Bath>
 struct NeedleBath {
-  GaussianBath bath;    // a and rho of the bath; its normal-velocity marginal is 002 eq. (18)
+  Bath bath;            // a and rho of the bath
   double length = 1.0;  // L
-
-  /// phihat(y) = exp(-y^2) / sqrt(pi) + y erf(y): phi(u) in units of rho / sqrt(a) (002 eq. 20).
-  static double unit_flux(double y) noexcept {
-    return std::exp(-y * y) / std::sqrt(std::numbers::pi) + y * std::erf(y);
-  }
-
-  /// Phihat(y, s): the mean of phihat over [y - s, y + s], i.e. Phi in units of rho L / sqrt(a) (002 eq. 26
-  /// for general a and L). Evaluated without cancellation: a Taylor series for s < 1e-2 (next term below
-  /// 3e-15), the sum Ghat(s + |y|) + Ghat(s - |y|) of positive terms for |y| <= s, and for |y| > s the
-  /// split Ghat(z) = z^2 / 2 + 1/4 + T(z) (z >= 0), whose polynomial part differences to 2 |y| s exactly.
-  static double unit_total_flux(double y, double s) noexcept {
-    const double inv_sqrt_pi = 1.0 / std::sqrt(std::numbers::pi);
-    y = std::fabs(y);
-    if (s < 1e-2) {
-      const double e = 2.0 * inv_sqrt_pi * std::exp(-y * y);  // phihat''(y)
-      const double s2 = s * s;
-      return unit_flux(y) + e * s2 / 6.0 + e * (4.0 * y * y - 2.0) * s2 * s2 / 120.0;
-    }
-    if (y <= s) {
-      auto g = [&](double z) { return (0.5 * z * z + 0.25) * std::erf(z) + 0.5 * inv_sqrt_pi * z * std::exp(-z * z); };
-      return (g(s + y) + g(s - y)) / (2.0 * s);
-    }
-    auto tail = [&](double z) {
-      return -(0.5 * z * z + 0.25) * std::erfc(z) + 0.5 * inv_sqrt_pi * z * std::exp(-z * z);
-    };
-    return y + (tail(y + s) - tail(y - s)) / (2.0 * s);
-  }
 
   /// phi_+(u): collisions per unit time and length on the + side (002 eq. 19).
   [[nodiscard]] double flux_right(double u) const noexcept { return bath.flux_right(u); }
@@ -94,13 +71,13 @@ struct NeedleBath {
   /// phi(u) = phi_+(u) + phi_-(u), both sides (002 eq. 20).
   [[nodiscard]] double flux(double u) const noexcept {
     const double sa = std::sqrt(bath.a);
-    return bath.rho / sa * unit_flux(sa * u);
+    return bath.rho / sa * Bath::unit_flux(sa * u);
   }
 
   /// Phi(v_n, omega) = int_{-L/2}^{L/2} phi(v_n + omega x) dx, both sides (002 eqs. 25-26).
   [[nodiscard]] double total_flux(double vn, double omega) const noexcept {
     const double sa = std::sqrt(bath.a);
-    return bath.rho * length / sa * unit_total_flux(sa * vn, 0.5 * sa * std::fabs(omega) * length);
+    return bath.rho * length / sa * Bath::unit_total_flux(sa * vn, 0.5 * sa * std::fabs(omega) * length);
   }
 
   /// Phi_+(v_n, omega) = int phi_+(v_n + omega x) dx = (Phi + rho L v_n) / 2 (phi_+ - phi_- = rho u, 002 eq. 19).
@@ -151,9 +128,10 @@ struct EventTimeCounters {
 };
 
 /// The free flight from the last collision (t = 0): v1, omega constant, theta(t) = theta_0 + omega t.
+template <class Bath>
 class NeedleFlight {
  public:
-  NeedleFlight(const NeedleBath& needle, const NeedleState& start) noexcept
+  NeedleFlight(const NeedleBath<Bath>& needle, const NeedleState& start) noexcept
       : needle_(needle),
         speed_(std::hypot(start.vx, start.vy)),
         phase_(std::atan2(start.vy, start.vx) - start.theta),
@@ -231,7 +209,7 @@ class NeedleFlight {
 
  private:
   static constexpr int max_iterations = 200;  // bisection alone needs < 60 from any bracket
-  NeedleBath needle_;
+  NeedleBath<Bath> needle_;
   double speed_;  // |v1|
   double phase_;  // beta - theta_0
   double omega_;

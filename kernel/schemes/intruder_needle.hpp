@@ -1,8 +1,8 @@
 #pragma once
-// The Gillespie algorithm for a needle intruder in a 2D Gaussian bath of point particles of mass m = 1
-// (002 sec. 3.2), one replica. Between collisions v1 and omega are constant and the needle turns,
-// theta(t) = theta_0 + omega t, so the total rate Phi(t) = Phi(v1.n(t), omega) varies (002 eqs. 24-26;
-// constant only when v1 = 0 or omega = 0). Each event:
+// The Gillespie algorithm for a needle intruder in a 2D bath of point particles of mass m = 1 (002 sec. 3.2),
+// one replica; the bath's normal-velocity law is Gaussian (002 eq. 18) or the power law of 002 eq. (23). Between
+// collisions v1 and omega are constant and the needle turns, theta(t) = theta_0 + omega t, so the total rate Phi(t) =
+// Phi(v1.n(t), omega) varies (002 eqs. 24-26; constant only when v1 = 0 or omega = 0). Each event:
 //   1. event time: int_0^t Phi = -ln xi_3 (002 eq. 27), Newton (002 eq. 28) with a bisection fallback
 //      (collide/needle_flux.hpp); observations inside the flight see the constant v1 and omega;
 //   2. turn the needle to the event time, v_n = v1.n (002 eq. 24);
@@ -32,11 +32,12 @@
 
 namespace granmc {
 
-inline ReplicaSeries run_intruder_needle(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
-                                         const RunOptions& options) {
+template <class Bath>
+ReplicaSeries run_intruder_needle(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
+                                  const RunOptions& options, const Bath& bath) {
   const IntruderConfig& in = *scene.intruder;
   const RandomStream rng(scene.run.seed, replica);
-  const NeedleBath needle{GaussianBath{in.bath_a, in.bath_density}, in.length};
+  const NeedleBath<Bath> needle{bath, in.length};
   const NeedleBody body{in.mass, needle_inertia(in)};
   const double radius = scene.histogram.radius;
   const std::size_t shells = static_cast<std::size_t>(scene.histogram.shells);

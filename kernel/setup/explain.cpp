@@ -211,7 +211,7 @@ void explain(const IntruderLinePlan& plan, const Scene& scene, PlanExplanation& 
 }
 
 void explain(const NeedlePlan& plan, const Scene& scene, PlanExplanation& out) {
-  explain_intruder(plan.bath.explanation, scene, out);
+  explain_intruder(std::visit([](const auto& bath) { return bath.explanation; }, plan.bath), scene, out);
   out.effects.push_back("colliding bath velocities sampled exactly (no window)");
   out.effects.push_back(
       "needle of length L: event times from the integrated flux by Newton with a bisection "
@@ -259,9 +259,7 @@ std::string bath_name(const BathChoice& bath) {
 }
 
 std::string name_of(const IntruderLinePlan& plan, const Scene&) { return "gillespie-1d<" + bath_name(plan.bath) + ">"; }
-std::string name_of(const NeedlePlan& plan, const Scene&) {
-  return std::string("gillespie-needle<") + plan.bath.name + ">";
-}
+std::string name_of(const NeedlePlan& plan, const Scene&) { return "gillespie-needle<" + bath_name(plan.bath) + ">"; }
 std::string name_of(const IntruderDsmcPlan& plan, const Scene&) {
   return "dsmc-intruder-1d<" + bath_name(plan.bath) + ">";
 }

@@ -20,7 +20,7 @@ constexpr const char* supported_list =
     "the Gaussian thermostat compensating the cooling rate; method = \"event\" with one species, collision.rate > "
     "0 (the form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or "
     "\"white-noise\", packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of "
-    "dimension 1 in a \"gaussian\" or \"power-law\" bath, or of dimension 2 (the needle) in a \"gaussian\" bath; "
+    "dimension 1 or 2 (the needle) in a \"gaussian\" or \"power-law\" bath; "
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
     "every gas scene";
 
@@ -50,8 +50,7 @@ SchemeChoice intruder_plan(const Scene& scene) {
     refuse("run.storage = \"float\" for an intruder scene (it stores no gas)");
   if (scene.run.method == Method::gillespie) {
     if (in.dimension == 1) return IntruderLinePlan{bath_choice(in)};
-    if (in.bath != BathKind::gaussian) refuse("the 2D needle in a \"power-law\" bath");
-    return NeedlePlan{GaussianBath{in.bath_a, in.bath_density}};
+    return NeedlePlan{bath_choice(in)};
   }
   if (scene.run.method == Method::event) refuse("the event scheme with an [intruder]");
   if (in.dimension != 1) refuse("the DSMC alternative for the 2D needle");

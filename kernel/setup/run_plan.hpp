@@ -140,9 +140,9 @@ struct IntruderLinePlan {
   BathChoice bath;
 };
 
-/// The Gillespie needle in the plane, Gaussian bath (002 sec. 3.2).
+/// The Gillespie needle in the plane (002 sec. 3.2).
 struct NeedlePlan {
-  GaussianBath bath;
+  BathChoice bath;
 };
 
 /// The time-stepped DSMC alternative for the intruder on a line (002 sec. 4).

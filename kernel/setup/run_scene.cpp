@@ -93,10 +93,14 @@ RunResult run(const IntruderLinePlan& plan, const Scene& scene, const RunOptions
       plan.bath);
 }
 
-RunResult run(const NeedlePlan&, const Scene& scene, const RunOptions& options) {
-  return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-    return run_intruder_needle(scene, replica, times, options);
-  });
+RunResult run(const NeedlePlan& plan, const Scene& scene, const RunOptions& options) {
+  return std::visit(
+      [&](const auto& bath) {
+        return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
+          return run_intruder_needle(scene, replica, times, options, bath);
+        });
+      },
+      plan.bath);
 }
 
 RunResult run(const IntruderDsmcPlan& plan, const Scene& scene, const RunOptions& options) {
