@@ -1,5 +1,6 @@
-"""tests/check_validation_claims.py fails where it should: a table that no longer supports its claim, a
-claim whose text changed, an agreement claim nobody registered. Run by ctest (test_validation_claims)."""
+"""docs/validation.md holds every claim it makes (tests/check_validation_claims.py), and the checker fails where
+it should, shown on a small page of its own: a table that no longer supports its claim, a claim whose text
+changed, an agreement claim nobody registered. Run by ctest (test_validation_claims)."""
 import os
 import subprocess
 import sys
@@ -8,50 +9,71 @@ import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-DOC = os.path.join(ROOT, "docs", "validation.md")
+
+PAGE = """# Validation
+
+## A figure (`make fig-x`, 1 min)
+
+| alpha | granmc | CI | theory |
+|---|---|---|---|
+| 0.9 | 1.010 | 0.020 | 1.000 |
+| 0.8 | 1.050 | 0.020 | 1.000 |
+
+Reading: 1 of 2 points is within its CI, the other 2.5 CI above the theory.
+"""
+
+CLAIMS = """[[claim]]
+section = "A figure"
+quote = "1 of 2 points is within its CI, the other 2.5 CI above the theory."
+value = "granmc"
+reference = "theory"
+expect = ["n == 2", "sum(z <= 1) == 1", "approx(max(z), '2.5')", "all(rel >= 0)"]
+"""
 
 
-def check(text):
-    with tempfile.NamedTemporaryFile("w", suffix=".md", delete=False) as f:
-        f.write(text)
-    try:
-        return subprocess.run([sys.executable, os.path.join(HERE, "check_validation_claims.py"), "--doc", f.name,
-                               "--claims", os.path.join(HERE, "validation_claims.toml")],
-                              capture_output=True, text=True, cwd=ROOT)
-    finally:
-        os.unlink(f.name)
+def check(page, claims=CLAIMS):
+    with tempfile.TemporaryDirectory() as d:
+        doc, spec = os.path.join(d, "page.md"), os.path.join(d, "claims.toml")
+        with open(doc, "w") as f:
+            f.write(page)
+        with open(spec, "w") as f:
+            f.write(claims)
+        return subprocess.run([sys.executable, os.path.join(HERE, "check_validation_claims.py"), "--doc", doc,
+                               "--claims", spec], capture_output=True, text=True, cwd=ROOT)
 
 
 class CheckValidationClaims(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        with open(DOC) as f:
-            cls.doc = f.read()
+    def test_docs_validation_md_holds_its_claims(self):
+        r = subprocess.run([sys.executable, os.path.join(HERE, "check_validation_claims.py")], capture_output=True,
+                           text=True, cwd=ROOT)
+        self.assertEqual(r.returncode, 0, r.stdout)
 
-    def changed(self, old, new):
-        self.assertEqual(self.doc.count(old), 1, old)
-        return self.doc.replace(old, new)
-
-    def test_the_page_passes(self):
-        r = check(self.doc)
+    def test_a_true_claim_passes(self):
+        r = check(PAGE)
         self.assertEqual(r.returncode, 0, r.stdout)
 
     def test_a_table_that_no_longer_supports_its_claim_fails(self):
-        # 000 Fig. 7, alpha = 0.7 at mu = 0.5: moved 2 CI off the theory, so "13 of 15 within CI" is false.
-        r = check(self.changed("| 0.5 | 1.0951 | 0.0420 | 1.1039 | 1.2179 | 0.0411 | 1.2246 | 1.3282 |",
-                               "| 0.5 | 1.0951 | 0.0420 | 1.1039 | 1.2179 | 0.0411 | 1.2246 | 1.2482 |"))
+        r = check(PAGE.replace("| 0.9 | 1.010 |", "| 0.9 | 1.030 |"))  # now 1.5 CI off: no point within CI
         self.assertNotEqual(r.returncode, 0)
-        self.assertIn("13 of 15 points are within their CI", r.stdout)
+        self.assertIn("does not hold: sum(z <= 1) == 1", r.stdout)
 
     def test_a_reworded_claim_fails(self):
-        r = check(self.changed("13 of 15 points are within their CI", "14 of 15 points are within their CI"))
+        r = check(PAGE.replace("the other 2.5 CI above", "the other 2.4 CI above"))
         self.assertNotEqual(r.returncode, 0)
         self.assertIn("quote not found", r.stdout)
 
     def test_an_unregistered_claim_fails(self):
-        r = check(self.changed("All consistent with 4.", "All consistent with 4. Every point agrees with theory."))
+        r = check(PAGE + "\nBoth points agree with theory.\n")
         self.assertNotEqual(r.returncode, 0)
         self.assertIn("unchecked claim", r.stdout)
+
+    def test_a_claim_asserted_by_a_missing_test_fails(self):
+        page = PAGE + "\nAll 12 within CI (a test).\n"
+        claims = CLAIMS + ('\n[[asserted]]\nsection = "A figure"\nquote = "All 12 within CI (a test)."\n'
+                           'test = "test_that_does_not_exist"\ntest_file = "tests/CMakeLists.txt"\n')
+        r = check(page, claims)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("test_that_does_not_exist not in tests/CMakeLists.txt", r.stdout)
 
 
 if __name__ == "__main__":
