@@ -168,6 +168,10 @@ int bath_command(const BathArgs& args) {
   const std::optional<CheckedScene> checked = checked_scene(args.scene, std::nullopt);
   if (!checked) return exit_bad_input;
   if (place().rank != 0) return exit_ok;
+  if (!(args.range[1] > args.range[0])) {
+    std::fprintf(stderr, "granmc bath: --range LO HI needs LO < HI (got %g %g)\n", args.range[0], args.range[1]);
+    return exit_bad_input;
+  }
   std::vector<double> edges;
   for (int b = 0; b <= args.bins; ++b) edges.push_back(args.range[0] + (args.range[1] - args.range[0]) * b / args.bins);
   auto probe = [&](const auto& bath) {

@@ -215,8 +215,8 @@ def run_sweep(args, base_path, scenes, base, sweep_dir):
 
 
 def run_points(args, here, fig, curves, bases, scenes, out):
-    """Runs every point (curve index, x[, rate index]) -> scene: one sweep per base scene file, the figure's in OUT/points,
-    a curve's own in OUT/points/<its stem>. Returns point -> (summary, HDF5 path)."""
+    """Runs every point (curve index, x[, rate index]) -> scene: one sweep per base scene file, the figure's in
+    OUT/points, a curve's own in OUT/points/<its stem>. Returns point -> (summary, HDF5 path)."""
     groups = {}  # base file -> (name in `bases`, {point: scene})
     for point, scene in scenes.items():  # point: (curve index, x) or (curve index, x, rate index)
         name = curves[point[0]].get("base", "")

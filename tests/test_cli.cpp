@@ -112,6 +112,7 @@ bath_density = 1.5
   double mass = 0.0;
   for (double d : j["points"][0]["g_right_density"]) mass += d * 0.1;
   EXPECT_NEAR(mass, 1.0, 1e-9 + static_cast<double>(j["points"][0]["g_right_outside"].get<int>()) / 20000.0);
+  EXPECT_EQ(granmc("bath bath.toml --range 1 -1").status, 2);
   // A scene without an intruder has no bath: exit 2, saying so.
   write("gas.toml", good_scene);
   const Outcome none = granmc("bath gas.toml");
