@@ -74,7 +74,19 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
   }
   std::printf("memory       %.1f MB of particles (%d replicas at once, %zu bytes per particle)\n",
               static_cast<double>(what.particle_bytes) / 1e6, what.replicas_in_flight, what.bytes_per_particle);
-  const double seconds = what.candidates / (what.candidates_per_second * what.replicas_in_flight);
+  if (what.threads_per_replica > 1)
+    std::printf(
+        "threads      %d replica(s) at a time, each on %d threads: the collision stage in concurrent rounds, the "
+        "same bits as on one (docs/scaling.md); the rest of a step on one thread\n",
+        what.replicas_in_flight, what.threads_per_replica);
+  else if (threads > what.replicas_in_flight)
+    std::printf("threads      %d replica(s) at a time, one thread each; %d thread(s) idle%s\n", what.replicas_in_flight,
+                threads - what.replicas_in_flight,
+                what.claim_lanes > 1 ? "" : " (this scheme runs a replica on one thread)");
+  else
+    std::printf("threads      %d replicas at a time, one thread each\n", what.replicas_in_flight);
+  const double seconds =
+      what.candidates / (what.candidates_per_second * what.replicas_in_flight * what.threads_per_replica);
   std::printf("work         %s%.3g candidate pairs, about %.0f s on %d threads at %.2g candidates/s per thread\n",
               what.candidates_upper_bound ? "at most " : "", what.candidates, seconds, threads,
               what.candidates_per_second);

@@ -90,6 +90,27 @@ std::vector<OutputRecord> declare() {
       [](const RunOutput& o, std::size_t) { return o.report.wall_seconds; });
   add("threads", K::count, S, "", "OpenMP threads (of rank 0 over MPI)",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.threads); });
+  add("threads_per_replica", K::count, S, "",
+      "of the threads, each replica's own: the time-stepped scheme's concurrent collision rounds (docs/scaling.md)",
+      [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.threads_per_replica); });
+  // The concurrent rounds' counts (observe/gas_series.hpp), present when the replicas had threads inside them.
+  const auto round_count = [](std::uint64_t CollisionRoundCounts::*count) {
+    return [count](const RunOutput& o, std::size_t) -> Value {
+      if (o.result.threads_per_replica < 2) return {};
+      return o.result.rounds.*count;
+    };
+  };
+  add("collision_rounds", K::count, S, "",
+      "time-stepped scheme with threads inside a replica: collision rounds run on several threads, all replicas (of "
+      "rank 0 over MPI)",
+      round_count(&CollisionRoundCounts::rounds));
+  add("collision_rounds_deferred", K::count, S, "",
+      "candidates those rounds deferred to the round's end (a particle that an earlier thread's chunk names) and "
+      "replayed in order",
+      round_count(&CollisionRoundCounts::deferred));
+  add("collision_rounds_in_order", K::count, S, "",
+      "rounds run again in order on one thread because a collision raised the majorant",
+      round_count(&CollisionRoundCounts::in_order));
   add("ranks", K::count, S, "", "MPI ranks (1 without MPI)",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.ranks); });
   add("particles", K::count, S, "", "simulated particles per replica, all species",
@@ -599,6 +620,17 @@ std::string output_format_version() {
 const std::vector<OutputRecord>& output_records() {
   static const std::vector<OutputRecord> records = declare();
   return records;
+}
+
+const std::vector<std::string>& machine_records() {
+  static const std::vector<std::string> paths = {"wall_seconds",
+                                                 "threads",
+                                                 "threads_per_replica",
+                                                 "collision_rounds",
+                                                 "collision_rounds_deferred",
+                                                 "collision_rounds_in_order",
+                                                 "ranks"};
+  return paths;
 }
 
 std::string species_group_name(const std::string& name, std::size_t index) {

@@ -28,7 +28,8 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-MACHINE_ATTRIBUTES = {"wall_seconds", "threads", "version"}
+MACHINE_ATTRIBUTES = {"wall_seconds", "threads", "threads_per_replica", "collision_rounds", "collision_rounds_deferred",
+                      "collision_rounds_in_order", "version"}
 
 
 def scene_files(paths):

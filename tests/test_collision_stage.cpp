@@ -11,6 +11,7 @@
 
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/schemes/collision_stage.hpp"
+#include "kernel/schemes/concurrent_rounds.hpp"
 #include "kernel/schemes/initial_state.hpp"
 #include "tests/test_scenes.hpp"
 
@@ -54,18 +55,18 @@ struct Gas {
   GasState state;
   std::vector<double> omega_max;
   std::vector<CollisionTally> tallies;
+  std::vector<std::uint64_t> candidates{1001, 400, 300, 77};  // per step, interleaved at random
 
   explicit Gas(Scene s = gas_scene(few_particles)) : scene(std::move(s)) {
     pairs = pair_coefficients(scene);
     state = maxwellian_state(scene, rng);
     omega_max.assign(pairs.size(), 1.0);  // low on purpose: the majorant update runs too
     tallies.resize(pairs.size());
+    candidates.resize(pairs.size());
   }
 
   template <std::uint64_t batch, class Kernel = HardSphere, class Shift = NoCollisionShift>
   void run(int steps, const Shift& shift = {}) {
-    std::vector<std::uint64_t> candidates{1001, 400, 300, 77};  // interleaved at random
-    candidates.resize(pairs.size());
     for (int s = 0; s < steps; ++s, ++state.step)
       collide_step<Kernel, batch, Shift>(state, pairs, omega_max, candidates, rng, tallies, Kernel{}, shift);
   }
@@ -172,4 +173,95 @@ TEST(CollisionStage, TheScreenLeavesOutOnlyRejectedCandidatesWithTheEnskogShift)
   Gas one;
   one.run<1, HardSphere, EnskogShearShift>(5, shift);
   expect_same_bits(one, screened);
+}
+
+namespace {
+
+/// Steps of the stage in concurrent rounds (schemes/concurrent_rounds.hpp) on `threads` threads.
+template <class Kernel = HardSphere, class Shift = NoCollisionShift>
+ConcurrentRounds run_in_rounds(Gas& gas, int steps, int threads, const Shift& shift = {}) {
+  ConcurrentRounds rounds;
+  rounds.threads = threads;
+  for (int s = 0; s < steps; ++s, ++gas.state.step)
+    collide_step_in_rounds<Kernel, 64, Shift>(gas.state, gas.pairs, gas.omega_max, gas.candidates, gas.rng, gas.tallies,
+                                              rounds, Kernel{}, shift);
+  return rounds;
+}
+
+/// A gas of `particles` of one species, or a mixture of 3/4 and 1/4 of them, with `per_particle` candidates per
+/// particle and step (in the mixture's four pairs as in Gas).
+Gas large_gas(int particles, bool mixture, int per_particle) {
+  Scene scene = mixture ? gas_scene(R"(
+    [[species]]
+    name = "a"
+    particles = 2
+
+    [[species]]
+    name = "b"
+    mass = 3.0
+    diameter = 1.5
+    density = 0.5
+    particles = 1
+  )")
+                        : gas_scene("[[species]]\nparticles = 1\n");
+  // Set after parsing, as in the large-gas screen test: the stage runs on any particle numbers.
+  if (mixture) {
+    scene.species[0].particles = static_cast<std::uint64_t>(3 * particles / 4);
+    scene.species[1].particles = static_cast<std::uint64_t>(particles / 4);
+  } else {
+    scene.species[0].particles = static_cast<std::uint64_t>(particles);
+  }
+  Gas gas(scene);
+  for (std::uint64_t& c : gas.candidates) c = c * static_cast<std::uint64_t>(particles * per_particle) / 1778;
+  return gas;
+}
+
+/// Runs `steps` steps of a gas in order and in rounds on 2 and 4 threads, from the majorants of `warm_up` steps
+/// in order, and expects the same bits; returns the rounds of the 2-thread run.
+template <class Kernel = HardSphere, class Shift = NoCollisionShift>
+ConcurrentRounds expect_rounds_keep_the_bits(int particles, bool mixture, int warm_up, const Shift& shift = {}) {
+  ConcurrentRounds two;
+  Gas in_order = large_gas(particles, mixture, 4);
+  in_order.run<64, Kernel, Shift>(warm_up + 3, shift);
+  for (int threads : {2, 4}) {
+    Gas in_rounds = large_gas(particles, mixture, 4);
+    in_rounds.run<64, Kernel, Shift>(warm_up, shift);
+    const ConcurrentRounds rounds = run_in_rounds<Kernel, Shift>(in_rounds, 3, threads, shift);
+    EXPECT_GT(rounds.counts.rounds, 10u);
+    EXPECT_GT(rounds.counts.deferred, 0u);
+    expect_same_bits(in_order, in_rounds);
+    if (threads == 2) two = rounds;
+  }
+  return two;
+}
+
+}  // namespace
+
+TEST(ConcurrentRounds, KeepTheBitsWhenAMajorantIsRaised) {
+  // From the low majorant of Gas: nearly every round raises it and runs again in order.
+  const ConcurrentRounds rounds = expect_rounds_keep_the_bits(8000, false, 0);
+  EXPECT_GT(rounds.counts.in_order, 0u);
+}
+
+TEST(ConcurrentRounds, KeepTheBitsOfOneSpecies) {
+  // After warm-up steps the majorant rarely moves: most rounds run concurrently, a quarter of their candidates
+  // deferred (2 chunks of 512 candidates among 8000 particles).
+  const ConcurrentRounds rounds = expect_rounds_keep_the_bits(8000, false, 4);
+  EXPECT_LT(rounds.counts.in_order, rounds.counts.rounds / 2);
+}
+
+TEST(ConcurrentRounds, KeepTheBitsOfAMixture) {
+  const ConcurrentRounds rounds = expect_rounds_keep_the_bits(8000, true, 4);
+  EXPECT_LT(rounds.counts.in_order, rounds.counts.rounds / 2);
+}
+
+TEST(ConcurrentRounds, KeepTheBitsWithoutTheScreen) {
+  const ConcurrentRounds rounds = expect_rounds_keep_the_bits<HardSphereUnscreened>(8000, true, 4);
+  EXPECT_LT(rounds.counts.in_order, rounds.counts.rounds / 2);
+}
+
+TEST(ConcurrentRounds, KeepTheBitsWithTheEnskogShift) {
+  const ConcurrentRounds rounds =
+      expect_rounds_keep_the_bits<HardSphere, EnskogShearShift>(8000, false, 4, EnskogShearShift{0.7});
+  EXPECT_LT(rounds.counts.in_order, rounds.counts.rounds / 2);
 }

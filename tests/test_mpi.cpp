@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers/mpi_replicas.hpp"
+#include "io/output_schema.hpp"
 #include "tests/granmc_process.hpp"
 
 namespace granmc {
@@ -282,14 +283,12 @@ class MpiRun : public granmc_test::GranmcDirectory {
   /// The JSON summary without what may differ between runs of the same seed.
   nlohmann::json summary(const std::string& stem) const {
     nlohmann::json j = nlohmann::json::parse(slurp(dir_ / (stem + ".json")));
-    j.erase("wall_seconds");
-    j.erase("threads");
-    j.erase("ranks");
+    for (const std::string& key : machine_records()) j.erase(key);
     return j;
   }
 
   /// Every dataset ("path") and attribute ("path@name") of an HDF5 file as its bytes in native layout
-  /// (variable-length strings as their text); the root's wall_seconds and threads left out.
+  /// (variable-length strings as their text); the root's machine records (machine_records()) left out.
   static std::map<std::string, std::vector<char>> read_h5(const std::string& path) {
     std::map<std::string, std::vector<char>> items;
     const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -315,7 +314,8 @@ class MpiRun : public granmc_test::GranmcDirectory {
               [](hid_t loc, const char* attr_name, const H5A_info_t*, void* d) -> herr_t {
                 auto& a = *static_cast<Attrs*>(d);
                 const std::string n(attr_name);
-                if (a.object == "/" && (n == "wall_seconds" || n == "threads" || n == "ranks")) return 0;
+                const auto& machine = machine_records();
+                if (a.object == "/" && std::find(machine.begin(), machine.end(), n) != machine.end()) return 0;
                 const hid_t attr = H5Aopen(loc, attr_name, H5P_DEFAULT);
                 (*a.items)[a.object + "@" + n] = read_attribute(attr);
                 H5Aclose(attr);

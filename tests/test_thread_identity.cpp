@@ -196,3 +196,41 @@ TEST(SeedIdentity, SeedChangesTheRealisation) {
   const RunResult b = run_scene(small_cooling_scene(12346), {});
   EXPECT_NE(a.replicas[0].temperature.back(), b.replicas[0].temperature.back());
 }
+
+// One replica, so the threads go inside it: the time-stepped scheme's concurrent collision rounds
+// (schemes/concurrent_rounds.hpp) on enough particles that the rounds run rather than fall back to one thread.
+class OneReplicaThreadIdentity : public ::testing::TestWithParam<int> {};
+
+INSTANTIATE_TEST_SUITE_P(Schemes, OneReplicaThreadIdentity, ::testing::Values(0, 2, 3),
+                         [](const auto& info) { return scheme_name(info.param); });
+
+TEST_P(OneReplicaThreadIdentity, TwoAndFourThreadsInsideTheReplicaGiveTheBitsOfOne) {
+  Scene scene = scene_for(GetParam());
+  scene.run.replicas = 1;
+  scene.run.t_end = 0.5;
+  scene.run.dt = 0.02;
+  scene.species[0].particles = 20000;
+  RunOptions one;
+  one.threads = 1;
+  const RunResult a = run_scene(scene, one);
+  EXPECT_EQ(a.threads_per_replica, 1);
+  for (const int threads : {2, 4}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads against 1");
+    RunOptions many;
+    many.threads = threads;
+    const RunResult b = run_scene(scene, many);
+    EXPECT_EQ(b.threads_per_replica, threads);
+    EXPECT_GT(b.rounds.rounds, 0u) << "the rounds ran, not only the in-order fallback";
+    const ReplicaSeries& x = a.replicas[0];
+    const ReplicaSeries& y = b.replicas[0];
+    EXPECT_TRUE(bit_identical(x.temperature, y.temperature));
+    EXPECT_TRUE(bit_identical(x.species[0].a2, y.species[0].a2));
+    EXPECT_TRUE(bit_identical(x.momentum, y.momentum));
+    EXPECT_TRUE(bit_identical(x.collisions, y.collisions));
+    EXPECT_EQ(x.candidates, y.candidates);
+    ASSERT_EQ(x.shear.has_value(), y.shear.has_value());
+    if (x.shear) {
+      EXPECT_TRUE(bit_identical(x.shear->pressure_collisional, y.shear->pressure_collisional));
+    }
+  }
+}

@@ -171,12 +171,22 @@ static_assert(sizeof(WeightedSeries) == 72, "WeightedSeries changed: add the new
 static_assert(sizeof(ReplicaSeries) == 568, "ReplicaSeries changed: add the new field to visit_replica_fields");
 #endif
 
+/// The time-stepped scheme's concurrent collision rounds (schemes/concurrent_rounds.hpp), summed over replicas:
+/// how the threads inside a replica went, which depends on the thread count (the results do not).
+struct CollisionRoundCounts {
+  std::uint64_t rounds = 0;    // rounds run on several threads
+  std::uint64_t deferred = 0;  // candidates deferred to the round's end and replayed in order
+  std::uint64_t in_order = 0;  // rounds run again in order on one thread after a majorant raise
+};
+
 struct RunResult {
   std::vector<double> times;  // sample times
   std::vector<std::string> species_names;
   std::vector<ReplicaSeries> replicas;  // in replica order
   int threads = 1;                      // OpenMP threads (of rank 0 over MPI)
+  int threads_per_replica = 1;          // of those, each replica's own (share_threads)
   int ranks = 1;                        // MPI ranks the replicas were spread over (1 without MPI)
+  CollisionRoundCounts rounds;          // threads inside replicas (threads_per_replica > 1)
 };
 
 }  // namespace granmc

@@ -1,6 +1,8 @@
 #pragma once
 // The collision backend of one process: every particle of the replica is held here, the collision stage
-// is the batched stage of schemes/collision_stage.hpp, and sums over particles run over all of them at once.
+// is the batched stage of schemes/collision_stage.hpp, on the replica's threads in concurrent rounds
+// (schemes/concurrent_rounds.hpp, the same bits for any thread count), and sums over particles run over all of
+// them at once.
 // The time stepper (schemes/dsmc.hpp) asks its backend for the initial state, the sums, the collisions of a
 // step, the effects and the observations; schemes/rank_wave_backend.hpp is the other backend.
 #include <algorithm>
@@ -14,13 +16,16 @@
 #include "kernel/effects/step_context.hpp"
 #include "kernel/observe/gas_observation.hpp"
 #include "kernel/schemes/collision_stage.hpp"
+#include "kernel/schemes/concurrent_rounds.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
 
 namespace granmc {
 
-struct BatchedBackend {
-  explicit BatchedBackend(const Scene&) noexcept {}
+class BatchedBackend {
+ public:
+  /// `threads`: the replica's threads for its collision stage.
+  explicit BatchedBackend(const Scene&, int threads = 1) noexcept { rounds_.threads = threads; }
 
   /// The Maxwellian start (000 eq. 13) with zero momentum per species.
   template <class Real>
@@ -42,13 +47,17 @@ struct BatchedBackend {
     return max2;
   }
 
-  /// The step's candidates of every ordered pair, in batches (schemes/collision_stage.hpp).
+  /// The step's candidates of every ordered pair, in batches (schemes/collision_stage.hpp), in rounds over the
+  /// replica's threads.
   template <class Kernel, class Shift, class Real>
   void collide(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                std::span<const std::uint64_t> candidates, const RandomStream& rng, std::span<CollisionTally> tallies,
-               const Kernel& kernel, const Shift& shift) const noexcept {
-    collide_step<Kernel>(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
+               const Kernel& kernel, const Shift& shift) {
+    collide_step_in_rounds<Kernel>(state, pairs, omega_max, candidates, rng, tallies, rounds_, kernel, shift);
   }
+
+  /// The rounds so far and how many ran again in order.
+  [[nodiscard]] const ConcurrentRounds& rounds() const noexcept { return rounds_; }
 
   /// An effect over the step, on all particles.
   template <class Effect, class Real>
@@ -61,6 +70,9 @@ struct BatchedBackend {
   GasTotals observe(const Scene& scene, const BasicGasState<Real>& state, ReplicaSeries& series, bool histogram) const {
     return observe_gas(scene, state, series, histogram);
   }
+
+ private:
+  ConcurrentRounds rounds_;
 };
 
 }  // namespace granmc

@@ -34,12 +34,15 @@
 #include <limits>
 #include <span>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/core/address_set.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
@@ -57,6 +60,31 @@ struct CollisionTally {
   double twice_energy_shear_work = 0.0;  // 2 x the energy the shift put in: -2 J s per collision
   SymTensor transfer;                    // sum over collisions of J sigma_ij sigma-hat sigma-hat (000 eq. 18)
 };
+
+/// One collision's terms of the tally sums, for candidate `candidate` of pair `q`: the stage adds them to
+/// the pair's tally as the collision happens, or, in a concurrent round (schemes/concurrent_rounds.hpp),
+/// keeps them, and the round adds them in candidate order.
+struct ShiftTerms {
+  double twice_energy_shear_work = 0.0;  // subtracted: -2 J s
+  SymTensor transfer;
+};
+struct NoShiftTerms {};
+template <bool shifted>
+struct CollisionOutcome {
+  std::uint64_t candidate;
+  std::size_t q;
+  double twice_energy_loss;
+  [[no_unique_address]] std::conditional_t<shifted, ShiftTerms, NoShiftTerms> shift;
+};
+template <bool shifted>
+void add(CollisionTally& tally, const CollisionOutcome<shifted>& o) noexcept {
+  ++tally.collisions;
+  tally.twice_energy_loss += o.twice_energy_loss;
+  if constexpr (shifted) {
+    tally.twice_energy_shear_work -= o.shift.twice_energy_shear_work;
+    tally.transfer += o.shift.transfer;
+  }
+}
 
 /// The initial majorant omega_max^(ij) for relative speeds up to U (stored units), in the form of the
 /// acceptance collide_step uses with this Shift: a bound on omega_kl with a shift, on its mean over
@@ -78,7 +106,13 @@ namespace detail {
 /// compile time when it is one (`one_pair`), the pair's constants, majorant and tally live in one slot and no
 /// candidate looks them up. The arithmetic and its order are the same in both forms, so the results are the
 /// same bits.
-template <class Kernel, class Shift, bool one_pair, std::uint64_t batch, class Real>
+///
+/// `in_round`: the stage is one thread's chunk of a concurrent round (schemes/concurrent_rounds.hpp). It draws
+/// its chunk and claims the chunk's particles first, then holds back (defers) the candidates that meet a
+/// particle of an earlier chunk, runs the others, and keeps, instead of summing them, each collision's
+/// terms, the velocities it overwrote and whether it raised a majorant; the round then replays the deferred
+/// candidates, adds the terms in candidate order, or undoes the round.
+template <class Kernel, class Shift, bool one_pair, std::uint64_t batch, class Real, bool in_round = false>
 class BatchedStage {
   static_assert(batch > 0);
   static constexpr std::size_t max_pairs = 4;  // ordered pairs of at most two species (the scene's limit)
@@ -101,6 +135,7 @@ class BatchedStage {
   /// directions n; the directions themselves where every candidate needs one (with the acceptance on the
   /// mean and the screen, only the candidates that pass it get theirs).
   struct Drawn {
+    std::uint64_t first;  // the candidate of lane 0
     typename Store::Particle pk[batch], pl[batch];
     std::uint8_t qs[batch];
     Lanes accept;
@@ -108,6 +143,10 @@ class BatchedStage {
   };
 
  public:
+  using Outcome = CollisionOutcome<Shift::active>;
+  /// The state of the pair choice: candidates left in pairs 0..k (draw).
+  using PairDeck = std::array<std::int64_t, max_pairs - 1>;
+
   BatchedStage(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<const double> omega_max,
                std::span<const std::uint64_t> candidates, const RandomStream& rng,
                std::span<const CollisionTally> tallies, const Kernel& kernel, const Shift& shift) noexcept
@@ -151,43 +190,136 @@ class BatchedStage {
     }
   }
 
-  /// Every candidate of the step, with two batches in flight: while the candidates of one collide, the next
-  /// one is drawn, and candidate b of the current batch prefetches the records of candidate b of the next, a
-  /// batch ahead of their use. The prefetches are spread over the batch: issued a batch's 128 at once, more
-  /// than the core's outstanding misses, the last ones waited a memory latency (as in the event scheme,
-  /// docs/performance.md).
-  void run() noexcept {
-    if (total_ > 0) {
-      draw(drawn_[0], 0, std::min(batch, total_));
-      for (std::uint64_t b = 0; b < std::min(batch, total_); ++b) {
-        drawn_[0].pk[b].prefetch();
-        drawn_[0].pl[b].prefetch();
-      }
+  /// Every candidate of the step in order (run_range).
+  void run() noexcept { run_range(0, total_); }
+
+  /// Candidates first .. end - 1 in order, drawn a batch ahead, from the pair choice's present state (deck).
+  void run_range(std::uint64_t first, std::uint64_t end) noexcept {
+    run_batches(first, end, [this](std::uint64_t i, std::uint64_t s0, std::uint64_t m) -> const Drawn& {
+      draw(drawn_[i & 1u], s0, m);
+      return drawn_[i & 1u];
+    });
+  }
+
+  [[nodiscard]] std::uint64_t total() const noexcept { return total_; }
+  [[nodiscard]] PairDeck deck() const noexcept {
+    PairDeck d;
+    std::copy(std::begin(cumulative_), std::end(cumulative_), d.begin());
+    return d;
+  }
+  void set_deck(const PairDeck& d) noexcept { std::copy(d.begin(), d.end(), std::begin(cumulative_)); }
+
+  /// Moves the pair choice past candidates s0 .. s0 + m - 1 (m <= batch), drawing their pairs only.
+  void advance_pairs(std::uint64_t s0, std::uint64_t m) noexcept {
+    if constexpr (!one_pair) {
+      std::array<std::uint64_t, batch> steps, index;
+      steps.fill(steps_[0]);
+      for (std::uint64_t b = 0; b < batch; ++b) index[b] = 2 * (s0 + b) + 1;
+      const RandomBlocks<batch> blocks = rng_.blocks(RngPurpose::collision_pair, 0, steps, index);
+      for (std::uint64_t b = 0; b < m; ++b) choose_pair(blocks.word[3][b], s0 + b);
     }
-    for (std::uint64_t s0 = 0, current = 0; s0 < total_; s0 += batch, current ^= 1) {
-      const std::uint64_t m = std::min(batch, total_ - s0);
-      const std::uint64_t m_next = s0 + m < total_ ? std::min(batch, total_ - s0 - m) : 0;
-      const Drawn& d = drawn_[current];
-      Drawn& next = drawn_[current ^ 1];
-      if (m_next > 0) draw(next, s0 + m, m_next);
-      if constexpr (screened && Shift::active) {
-        for (std::uint64_t full_test = screen(d, m, next, m_next); full_test != 0; full_test &= full_test - 1) {
-          const auto b = static_cast<std::uint64_t>(std::countr_zero(full_test));
-          test_and_apply(d, b, d.sx, d.sy, d.sz, b);
+  }
+
+  /// The running majorants and tallies, per pair.
+  [[nodiscard]] std::span<const double> majorants() const noexcept { return {majorant_, n_pairs_}; }
+  /// Adds a collision's terms to its pair's tally.
+  void add_outcome(const Outcome& o) noexcept { add(tally_[one_pair ? 0 : o.q], o); }
+
+  // A concurrent round's chunk (in_round only), in the order the round calls them.
+
+  /// Starts the chunk of candidates first .. end - 1 from the pair choice `deck` and the majorants.
+  void begin_chunk(std::uint64_t first, std::uint64_t end, const PairDeck& deck, std::span<const double> majorants) {
+    static_assert(in_round);
+    chunk_first_ = first, chunk_end_ = end;
+    set_deck(deck);
+    std::copy(majorants.begin(), majorants.end(), majorant_);
+    raised_ = false;
+    outcomes_.clear(), undo_.clear();
+    replayed_from_ = undo_replayed_from_ = 0;
+    chunk_.resize((end - first + batch - 1) / batch);
+    deferred_.assign(chunk_.size(), 0);
+  }
+
+  /// Draws the chunk and writes `tag` into claim lane `lane` of each of its particles, a batch after
+  /// prefetching them (the chunk's records are in cache when it runs).
+  void draw_and_claim(std::size_t lane, std::uint16_t tag) noexcept {
+    for (std::uint64_t i = 0, s0 = chunk_first_; i <= chunk_.size(); ++i, s0 += batch) {
+      if (i < chunk_.size()) {
+        Drawn& d = chunk_[i];
+        draw(d, s0, std::min(batch, chunk_end_ - s0));
+        for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - s0); ++b) {
+          d.pk[b].prefetch();
+          d.pl[b].prefetch();
         }
-      } else if constexpr (screened) {
-        apply_screened(d, impact_directions(d, screen(d, m, next, m_next)));
-      } else {
-        for (std::uint64_t b = 0; b < m; ++b) {
-          if (b < m_next) {
-            next.pk[b].prefetch();
-            next.pl[b].prefetch();
-          }
-          test_and_apply(d, b, d.sx, d.sy, d.sz, b);
+      }
+      if (i > 0) {
+        const Drawn& d = chunk_[i - 1];
+        for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - d.first); ++b) {
+          d.pk[b].claim(lane, tag);
+          d.pl[b].claim(lane, tag);
         }
       }
     }
   }
+
+  /// Defers the candidates of the chunk that meet a particle claimed this round (`tag`) by an earlier chunk
+  /// (a lane below `lane`), and those that meet a particle of a deferred candidate before them.
+  void defer(std::size_t lane, std::uint16_t tag) {
+    if (lane == 0) return;  // the round's first chunk follows every candidate before it
+    held_back_.clear();
+    for (std::size_t i = 0; i < chunk_.size(); ++i) {
+      const Drawn& d = chunk_[i];
+      for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - d.first); ++b) {
+        const auto& pk = d.pk[b];
+        const auto& pl = d.pl[b];
+        if (pk.claimed_below(lane, tag) || pl.claimed_below(lane, tag) || held_back_.contains(pk.address()) ||
+            held_back_.contains(pl.address())) {
+          deferred_[i] |= std::uint64_t{1} << b;
+          held_back_.insert(pk.address());
+          held_back_.insert(pl.address());
+        }
+      }
+    }
+  }
+
+  /// The chunk's candidates that are not deferred, in order.
+  void run_chunk() noexcept {
+    run_batches(chunk_first_, chunk_end_,
+                [this](std::uint64_t i, std::uint64_t, std::uint64_t) -> const Drawn& { return chunk_[i]; });
+    replayed_from_ = outcomes_.size();
+    undo_replayed_from_ = undo_.size();
+  }
+
+  /// The deferred candidates, in order, each in full (after every earlier chunk of the round has run).
+  void replay_deferred() noexcept {
+    for (std::size_t i = 0; i < chunk_.size(); ++i)
+      for (std::uint64_t held = deferred_[i]; held != 0; held &= held - 1) {
+        const auto b = static_cast<std::uint64_t>(std::countr_zero(held));
+        const Drawn& d = chunk_[i];
+        // n as the batch would have had it: the same bits as the SIMD unit_vectors
+        const Vec3 n = directions_for_all ? Vec3{d.sx[b], d.sy[b], d.sz[b]} : unit_vector(d.dir1[b], d.dir2[b]);
+        nx_[0] = n.x, ny_[0] = n.y, nz_[0] = n.z;
+        test_and_apply(d, b, nx_, ny_, nz_, 0);
+      }
+  }
+
+  [[nodiscard]] std::uint64_t deferred_count() const noexcept {
+    std::uint64_t n = 0;
+    for (std::uint64_t held : deferred_) n += static_cast<std::uint64_t>(std::popcount(held));
+    return n;
+  }
+  /// Whether a candidate of the chunk raised a majorant (then the round runs again in order).
+  [[nodiscard]] bool raised() const noexcept { return raised_; }
+  /// The collisions' terms: those of run_chunk, then those of replay_deferred, each in candidate order.
+  [[nodiscard]] std::span<const Outcome> chunk_outcomes() const noexcept {
+    return std::span(outcomes_).first(replayed_from_);
+  }
+  [[nodiscard]] std::span<const Outcome> replayed_outcomes() const noexcept {
+    return std::span(outcomes_).subspan(replayed_from_);
+  }
+  /// Restores the velocities that replay_deferred overwrote, then those that run_chunk overwrote.
+  void undo_replayed() noexcept { undo(undo_replayed_from_, undo_.size()); }
+  void undo_chunk() noexcept { undo(0, undo_replayed_from_); }
 
   /// The raised majorants and the step's tallies, per pair.
   void finish(std::span<double> omega_max, std::span<CollisionTally> tallies) const noexcept {
@@ -198,6 +330,62 @@ class BatchedStage {
   }
 
  private:
+  /// Candidates first .. end - 1 in order, with two batches in flight: batch_at(i, s0, m) readies batch i of the
+  /// range (candidates s0 .. s0 + m - 1) and returns it, and is called for the next batch before the current
+  /// one collides; candidate b of the current batch prefetches the records of candidate b of the next, a batch
+  /// ahead of their use. The prefetches are spread over the batch: issued a batch's 128 at once, more than the
+  /// core's outstanding misses, the last ones waited a memory latency (as in the event scheme,
+  /// docs/performance.md). In a round the deferred candidates of a batch are skipped.
+  template <class BatchAt>
+  void run_batches(std::uint64_t first, std::uint64_t end, BatchAt&& batch_at) noexcept {
+    if (first >= end) return;
+    const Drawn* current = &batch_at(0, first, std::min(batch, end - first));
+    for (std::uint64_t b = 0; b < std::min(batch, end - first); ++b) {
+      current->pk[b].prefetch();
+      current->pl[b].prefetch();
+    }
+    for (std::uint64_t i = 0, s0 = first; s0 < end; ++i, s0 += batch) {
+      const std::uint64_t m = std::min(batch, end - s0);
+      const std::uint64_t m_next = s0 + m < end ? std::min(batch, end - s0 - m) : 0;
+      const Drawn& d = *current;
+      const Drawn& next = m_next > 0 ? batch_at(i + 1, s0 + m, m_next) : d;
+      const std::uint64_t skip = in_round ? deferred_[i] : 0;
+      if constexpr (screened && Shift::active) {
+        for (std::uint64_t full_test = screen(d, m, next, m_next, skip) & ~skip; full_test != 0;
+             full_test &= full_test - 1) {
+          const auto b = static_cast<std::uint64_t>(std::countr_zero(full_test));
+          test_and_apply(d, b, d.sx, d.sy, d.sz, b);
+        }
+      } else if constexpr (screened) {
+        apply_screened(d, impact_directions(d, screen(d, m, next, m_next, skip) & ~skip));
+      } else {
+        for (std::uint64_t b = 0; b < m; ++b) {
+          if (b < m_next) {
+            next.pk[b].prefetch();
+            next.pl[b].prefetch();
+          }
+          if (((skip >> b) & 1u) == 0) test_and_apply(d, b, d.sx, d.sy, d.sz, b);
+        }
+      }
+      current = &next;
+    }
+  }
+
+  /// The pair of candidate s, given its uniform word, without replacement: a uniformly random interleaving of
+  /// the pairs' candidates. Moves the pair choice on.
+  std::size_t choose_pair(std::uint32_t word, std::uint64_t s) noexcept {
+    const double r = uniform_open(word) * static_cast<double>(total_ - s);
+    // q = the number of cumulative counts <= r, without branches (a loop here mispredicted 0.86 times
+    // per candidate, callgrind, docs/performance.md). r < total - s = candidates left, so q is a pair
+    // with candidates left. The same q as subtracting the counts from r one by one: r < 2^53, so r minus
+    // an integer below it is exact.
+    std::size_t q = 0;
+    for (std::size_t k = 0; k + 1 < max_pairs; ++k)
+      q += static_cast<std::size_t>(r >= static_cast<double>(cumulative_[k]));
+    for (std::size_t k = 0; k + 1 < max_pairs; ++k) cumulative_[k] -= static_cast<std::int64_t>(k >= q);
+    return q;
+  }
+
   /// Draws candidates s0 .. s0 + m - 1 into d. They depend on the counters and the pair counts only, never
   /// on a velocity, so a batch can be drawn before the one in front of it has collided.
   void draw(Drawn& d, std::uint64_t s0, std::uint64_t m) noexcept {
@@ -212,18 +400,10 @@ class BatchedStage {
     const auto& w = blocks.word;
     auto pick = [&](std::size_t word) { return std::span<const std::uint32_t, batch>(w[word].data(), batch); };
     const auto draw = [](std::uint64_t b) { return batch + b; };
+    d.first = s0;
     if constexpr (!one_pair) {
-      for (std::uint64_t b = 0; b < m;
-           ++b) {  // the next candidate's pair, without replacement: a uniformly random interleaving
-        const double r = uniform_open(w[3][draw(b)]) * static_cast<double>(total_ - (s0 + b));
-        // q = the number of cumulative counts <= r, without branches (a loop here mispredicted 0.86 times
-        // per candidate, callgrind, docs/performance.md). r < total - s = candidates left, so q is a pair
-        // with candidates left. The same q as subtracting the counts from r one by one: r < 2^53, so r minus
-        // an integer below it is exact.
-        std::size_t q = 0;
-        for (std::size_t k = 0; k + 1 < max_pairs; ++k)
-          q += static_cast<std::size_t>(r >= static_cast<double>(cumulative_[k]));
-        for (std::size_t k = 0; k + 1 < max_pairs; ++k) cumulative_[k] -= static_cast<std::int64_t>(k >= q);
+      for (std::uint64_t b = 0; b < m; ++b) {
+        const std::size_t q = choose_pair(w[3][draw(b)], s0 + b);
         d.qs[b] = static_cast<std::uint8_t>(q);
         ranges_k_[b] = static_cast<std::uint32_t>(range_k_[q]);  // used only when narrow
         ranges_l_[b] = static_cast<std::uint32_t>(range_l_[q]);
@@ -263,6 +443,7 @@ class BatchedStage {
     if (omega > majorant_[q]) {
       majorant_[q] = omega;
       ++tally_[q].majorant_updates;
+      if constexpr (in_round) raised_ = true;
       return true;
     }
     return !(u * majorant_[q] > omega);
@@ -272,16 +453,23 @@ class BatchedStage {
   void apply(const Drawn& d, std::uint64_t b, Vec3 vk, Vec3 vl, const Vec3& sigma, double g_sigma) noexcept {
     const std::size_t q = one_pair ? 0 : d.qs[b];
     const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
+    if constexpr (in_round) {
+      undo_.emplace_back(d.pk[b], vk);
+      undo_.emplace_back(d.pl[b], vl);
+    }
     inelastic_collision(vk, vl, sigma, g_sigma, p);
     d.pk[b].set_velocity(vk);
     d.pl[b].set_velocity(vl);
-    ++tally_[q].collisions;
-    tally_[q].twice_energy_loss += 2.0 * p.energy_loss * g_sigma * g_sigma;
+    Outcome o{d.first + b, q, 2.0 * p.energy_loss * g_sigma * g_sigma, {}};
     if constexpr (Shift::active) {  // collide/enskog_shear_shift.hpp
       const double impulse = p.one_plus_alpha * p.reduced_mass * g_sigma;
-      tally_[q].twice_energy_shear_work -= 2.0 * impulse * p.diameter * shift_.rate * sigma.x * sigma.y;
-      tally_[q].transfer += weighted_dyad(impulse * p.diameter, sigma);
+      o.shift.twice_energy_shear_work = 2.0 * impulse * p.diameter * shift_.rate * sigma.x * sigma.y;
+      o.shift.transfer = weighted_dyad(impulse * p.diameter, sigma);
     }
+    if constexpr (in_round)
+      outcomes_.push_back(o);
+    else
+      add(tally_[q], o);
   }
 
   /// Candidate b of batch d in full: the acceptance, then the collision. Its direction n is (nx, ny, nz)[e].
@@ -331,7 +519,8 @@ class BatchedStage {
   /// when candidate b of d needs test_and_apply; bit b of shared_ when it shares a particle (or a slot of
   /// `seen_`) with an earlier candidate of its batch. Candidate b prefetches candidate b of the next batch (m_next
   /// of them), as run does without the screen.
-  std::uint64_t screen(const Drawn& d, std::uint64_t m, const Drawn& next, std::uint64_t m_next) noexcept {
+  std::uint64_t screen(const Drawn& d, std::uint64_t m, const Drawn& next, std::uint64_t m_next,
+                       std::uint64_t skip) noexcept {
     if (++stamp_ == 0) {  // 255 batches since the table was cleared
       seen_.fill(0);
       stamp_ = 1;
@@ -343,6 +532,9 @@ class BatchedStage {
         if (b < m_next) {
           next.pk[b].prefetch();
           next.pl[b].prefetch();
+        }
+        if constexpr (in_round) {
+          if ((skip >> b) & 1u) continue;  // deferred: its particles may be another thread's now
         }
         const std::size_t q = one_pair ? 0 : d.qs[b];
         const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
@@ -426,6 +618,10 @@ class BatchedStage {
     }
   }
 
+  void undo(std::size_t from, std::size_t to) noexcept {
+    for (std::size_t e = to; e > from; --e) undo_[e - 1].first.set_velocity(undo_[e - 1].second);
+  }
+
   static std::uintptr_t slot(const typename Store::Particle& p) noexcept {
     return (reinterpret_cast<std::uintptr_t>(p.address()) >> 4) & ((std::uintptr_t{1} << slots_log2) - 1);
   }
@@ -457,6 +653,16 @@ class BatchedStage {
   Lanes nx_, ny_, nz_;  // the directions n of the candidates that passed the screen
   Lanes gx_, gy_, gz_, g_square_, sigma_x_, sigma_y_, sigma_z_,
       g_sigma_;  // and, for those, g and |g|^2, then sigma-hat and g.sigma
+  // In a round: the chunk, its drawn batches, the deferred candidates (a bit per lane), the particles they
+  // hold back, and what the chunk did.
+  std::uint64_t chunk_first_ = 0, chunk_end_ = 0;
+  std::vector<Drawn> chunk_;
+  std::vector<std::uint64_t> deferred_;
+  AddressSet held_back_;
+  std::vector<Outcome> outcomes_;
+  std::vector<std::pair<typename Store::Particle, Vec3>> undo_;  // particle, velocity before a collision
+  std::size_t replayed_from_ = 0, undo_replayed_from_ = 0;
+  bool raised_ = false;
 };
 
 }  // namespace detail

@@ -1,11 +1,14 @@
 #pragma once
 // Runs the replicas of a scene in parallel (OpenMP), each from its own random stream, and collects
-// their series in replica order: the result is the same for any thread count. With RunOptions'
+// their series in replica order: the result is the same for any thread count. Threads beyond the replicas go
+// inside them, where the scheme can use them (share_threads). With RunOptions'
 // replica_offset and replica_stride it runs only its share (MPI ranks) and leaves the rest empty.
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <utility>
 #include <vector>
 
 #include "kernel/core/scene.hpp"
@@ -15,20 +18,44 @@
 
 namespace granmc {
 
-/// run_one(replica, times) -> ReplicaSeries.
+/// How a run's threads are shared: `concurrent` replicas at a time, each with `inside` threads of its own (the
+/// time-stepped scheme's concurrent collision rounds, schemes/concurrent_rounds.hpp).
+struct ThreadShare {
+  int concurrent = 1;
+  int inside = 1;
+};
+
+/// The replicas this process runs: offset, offset + stride, ... below run.replicas (run_options.hpp).
+inline int own_replicas(const Scene& scene, const RunOptions& options) noexcept {
+  const int n = scene.run.replicas, stride = options.replica_stride;
+  return n > options.replica_offset ? (n - options.replica_offset + stride - 1) / stride : 0;
+}
+
+/// The threads first to replicas, one each; the threads left over to the replicas, up to `max_inside` each (1
+/// for a scheme that runs a replica on one thread).
+inline ThreadShare share_threads(const Scene& scene, const RunOptions& options, int max_inside) {
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  ThreadShare share;
+  share.concurrent = std::max(1, std::min(threads, own_replicas(scene, options)));
+  share.inside = std::max(1, std::min(max_inside, threads / share.concurrent));
+  return share;
+}
+
+/// run_one(replica, times) -> ReplicaSeries, share.concurrent replicas at a time.
 template <class RunOne>
-RunResult run_replicas(const Scene& scene, const RunOptions& options, RunOne&& run_one) {
+RunResult run_replicas(const Scene& scene, const RunOptions& options, const ThreadShare& share, RunOne&& run_one) {
   RunResult result;
   result.times = sample_times(scene.run);
   for (const SpeciesConfig& s : scene.species) result.species_names.push_back(s.name);
   const int n = scene.run.replicas;
   result.replicas.resize(static_cast<std::size_t>(n));
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  result.threads = threads;
+  result.threads = share.concurrent * share.inside;
+  result.threads_per_replica = share.inside;
+  if (share.inside > 1) omp_set_max_active_levels(2);  // the replicas' own teams inside the replicas' team
   std::exception_ptr failure;
-  const int stride = options.replica_stride;  // own replicas: offset, offset + stride, ... (run_options.hpp)
-  const int own = n > options.replica_offset ? (n - options.replica_offset + stride - 1) / stride : 0;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  const int stride = options.replica_stride;
+  const int own = own_replicas(scene, options);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(share.concurrent)
   for (int k = 0; k < own; ++k) {
     const int r = options.replica_offset + k * stride;
     try {
@@ -40,6 +67,12 @@ RunResult run_replicas(const Scene& scene, const RunOptions& options, RunOne&& r
   }
   if (failure) std::rethrow_exception(failure);
   return result;
+}
+
+/// run_one(replica, times) -> ReplicaSeries, one thread per replica.
+template <class RunOne>
+RunResult run_replicas(const Scene& scene, const RunOptions& options, RunOne&& run_one) {
+  return run_replicas(scene, options, share_threads(scene, options, 1), std::forward<RunOne>(run_one));
 }
 
 }  // namespace granmc

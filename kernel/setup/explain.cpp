@@ -8,6 +8,7 @@
 
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/species_store.hpp"
+#include "kernel/schemes/replica_runner.hpp"
 #include "kernel/theory/intruder.hpp"
 #include "kernel/theory/scene_theory.hpp"
 #include "kernel/theory/white_noise.hpp"
@@ -278,7 +279,18 @@ std::string instantiation_name(const RunPlan& plan, const Scene& scene) {
 PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int threads) {
   PlanExplanation out;
   out.instantiation = instantiation_name(plan, scene);
-  out.replicas_in_flight = std::max(1, std::min(threads, scene.run.replicas));
+  // The run's own share (schemes/replica_runner.hpp): threads left over by the replicas go inside them where
+  // the time-stepped scheme's batched stage runs them in concurrent rounds, up to a record's claim lanes.
+  const auto* stepped = std::get_if<SteppedPlan>(&plan.scheme);
+  const bool rounds = stepped != nullptr && std::holds_alternative<BatchedStage>(stepped->backend);
+  const std::size_t lanes =
+      scene.run.storage == Storage::single_precision ? FloatSpeciesStore::claim_lanes : SpeciesStore::claim_lanes;
+  RunOptions options;
+  options.threads = threads;
+  const ThreadShare share = share_threads(scene, options, rounds ? static_cast<int>(lanes) : 1);
+  out.replicas_in_flight = share.concurrent;
+  out.threads_per_replica = share.inside;
+  out.claim_lanes = rounds ? static_cast<int>(lanes) : 1;
   std::visit([&](const auto& scheme) { explain(scheme, scene, out); }, plan.scheme);
   return out;
 }

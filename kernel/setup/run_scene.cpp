@@ -19,7 +19,8 @@ namespace granmc {
 namespace {
 
 /// The time-stepped scheme with the plan's kernel and effects: the replicas over the threads with the batched
-/// backend, or, with the rank waves, every replica spread over options.spread, one after another.
+/// backend (threads left over inside the replicas, in concurrent collision rounds), or, with the rank waves, every
+/// replica spread over options.spread, one after another.
 template <class Backend, class Real, class Kernel, class... Effects>
 RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Kernel& kernel, const Effects&... effects) {
   if constexpr (std::is_same_v<Backend, RankWaveBackend>) {
@@ -34,10 +35,24 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Kernel& 
     }
     return result;
   } else {
-    return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-      BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, replica, Backend(scene), kernel, effects...);
-      return run_dsmc_replica(sim, scene, times, options.on_sample);
-    });
+    const ThreadShare share = share_threads(scene, options, static_cast<int>(BasicSpeciesStore<Real>::claim_lanes));
+    CollisionRoundCounts rounds;
+    RunResult result =
+        run_replicas(scene, options, share, [&](std::uint64_t replica, const std::vector<double>& times) {
+          BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, replica, Backend(scene, share.inside), kernel,
+                                                           effects...);
+          ReplicaSeries series = run_dsmc_replica(sim, scene, times, options.on_sample);
+          const CollisionRoundCounts& its = sim.backend().rounds().counts;
+#pragma omp critical(granmc_round_counts)
+          {
+            rounds.rounds += its.rounds;
+            rounds.deferred += its.deferred;
+            rounds.in_order += its.in_order;
+          }
+          return series;
+        });
+    result.rounds = rounds;
+    return result;
   }
 }
 
