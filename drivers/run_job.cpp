@@ -65,7 +65,8 @@ bool rank0_value(bool value) {
 #endif
 }
 
-JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet) {
+JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet,
+                  int threads_per_replica) {
   const bool spread_particles = plan.spread == Spread::particles;
   const Place at = place();
   const ProgressLine::Mode progress_mode = at.rank != 0 || quiet   ? ProgressLine::Mode::off
@@ -75,6 +76,7 @@ JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& out
   ProgressLine progress(static_cast<std::uint64_t>(replicas_here) * (scene.run.samples + 1), progress_mode);
   RunOptions options;
   options.threads = threads;
+  options.threads_per_replica = threads_per_replica;
   options.on_sample = [&progress] { progress.tick(); };
   options.replica_offset = at.rank;
   options.replica_stride = at.size;

@@ -42,12 +42,13 @@ struct JobResult {
 };
 
 /// Runs `plan`, made from `scene`, with this rank's replicas on `threads` threads (0: the
-/// OpenMP default), gathers them to rank 0, and there writes `outputs` (creating their directories). The
-/// progress line shows on rank 0 when stderr is a terminal, unless `quiet`. Collective under MPI. Throws
-/// std::exception on failure; report it with run_failure.
-/// With plan.spread = Spread::particles, every replica is one system over all ranks instead
-/// (schemes/rank_wave_backend.hpp), the replicas one after another on one thread per rank.
-JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet);
+/// OpenMP default), at most `threads_per_replica` inside one replica (RunOptions), gathers them to rank 0, and there
+/// writes `outputs` (creating their directories). The progress line shows on rank 0 when stderr is a terminal, unless
+/// `quiet`. Collective under MPI. Throws std::exception on failure; report it with run_failure. With plan.spread =
+/// Spread::particles, every replica is one system over all ranks instead (schemes/rank_wave_backend.hpp), the replicas
+/// one after another on one thread per rank.
+JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet,
+                  int threads_per_replica = 1);
 
 /// A failure during a run: one message and exit status 1. Over several MPI ranks the message names the rank
 /// and every rank is ended (MPI_Abort), so that none waits for it.

@@ -76,6 +76,24 @@ TEST_F(Cli, OneAndTwoThreadsWriteTheSameNumbers) {
   EXPECT_EQ(one.dump(), two.dump());  // the dump prints doubles exactly (round-trip precision)
 }
 
+TEST_F(Cli, ThreadsInsideOneReplicaWriteTheSameNumbers) {
+  std::string scene = with("replicas = 2", "replicas = 1");
+  scene = scene.replace(scene.find("particles = 500"), 15, "particles = 20000");
+  write("one.toml", scene);
+  ASSERT_EQ(granmc("run one.toml --quiet --threads 1 --out one.h5 --summary one.json").status, 0);
+  ASSERT_EQ(granmc("run one.toml --quiet --threads 2 --out two.h5 --summary two.json").status, 0);
+  ASSERT_EQ(granmc("run one.toml --quiet --threads 2 --threads-per-replica 2 --out in.h5 --summary in.json").status, 0);
+  nlohmann::json one = nlohmann::json::parse(slurp(dir_ / "one.json"));
+  nlohmann::json two = nlohmann::json::parse(slurp(dir_ / "two.json"));
+  nlohmann::json in = nlohmann::json::parse(slurp(dir_ / "in.json"));
+  EXPECT_EQ(two["threads_per_replica"], 1) << "one thread per replica unless asked for";
+  EXPECT_EQ(in["threads_per_replica"], 2);
+  EXPECT_GT(in["collision_rounds"].get<std::uint64_t>(), 0u) << "the rounds ran, not only the in-order fallback";
+  for (auto* j : {&one, &in})
+    for (const std::string& key : granmc::machine_records()) j->erase(key);
+  EXPECT_EQ(one.dump(), in.dump());
+}
+
 TEST_F(Cli, DefaultOutputIsNamedAfterTheScene) {
   write("good.toml", good_scene);
   EXPECT_EQ(granmc("run good.toml --quiet").status, 0);

@@ -218,6 +218,7 @@ TEST_P(OneReplicaThreadIdentity, TwoAndFourThreadsInsideTheReplicaGiveTheBitsOfO
     SCOPED_TRACE(std::to_string(threads) + " threads against 1");
     RunOptions many;
     many.threads = threads;
+    many.threads_per_replica = threads;
     const RunResult b = run_scene(scene, many);
     EXPECT_EQ(b.threads_per_replica, threads);
     EXPECT_GT(b.rounds.rounds, 0u) << "the rounds ran, not only the in-order fallback";

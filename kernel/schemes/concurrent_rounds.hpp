@@ -15,8 +15,8 @@
 // is the majorant, which a collision raises when omega exceeds it (000 sec. 3): all chunks test against
 // its value at the round's start, which is the serial value unless a candidate raises it. If one does,
 // the round's velocities are restored from the overwritten values kept in step 2 and 3, and the round runs
-// again in order on one thread. Raises are rare (a few per run); the deferred fraction is about
-// 2 B (T - 1) / N (B = N / 512 below: 0.4 % at two threads).
+// again in order on one thread. Raises are rare (a few per run); a candidate of chunk t is deferred with
+// probability about 4 B t / N (0.08 % at N = 10^7, B = 2048, t = 1).
 #include <omp.h>
 
 #include <algorithm>
@@ -40,10 +40,11 @@ struct ConcurrentRounds {
   CollisionRoundCounts counts;
 };
 
-/// Candidates per thread and round for N particles: about N / 512 (a multiple of the batch), at least
-/// 512 and at most 8192 (a chunk's records and draws stay within the core's cache).
+/// Candidates per thread and round for N particles: about N / 4096 (a multiple of the batch), at least
+/// 512 and at most 2048 (a chunk's records and draws stay within the core's cache; 1024 and 2048 were the
+/// fastest at N = 10^7 in docs/scaling.md's measurement, 4096 and 8192 slower).
 inline std::uint64_t round_chunk(std::uint64_t particles) noexcept {
-  return std::clamp<std::uint64_t>(particles / 512 / 64 * 64, 512, 8192);
+  return std::clamp<std::uint64_t>(particles / 4096 / 64 * 64, 512, 2048);
 }
 
 namespace detail {

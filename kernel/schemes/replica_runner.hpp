@@ -37,7 +37,7 @@ inline ThreadShare share_threads(const Scene& scene, const RunOptions& options, 
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   ThreadShare share;
   share.concurrent = std::max(1, std::min(threads, own_replicas(scene, options)));
-  share.inside = std::max(1, std::min(max_inside, threads / share.concurrent));
+  share.inside = std::max(1, std::min({max_inside, options.threads_per_replica, threads / share.concurrent}));
   return share;
 }
 

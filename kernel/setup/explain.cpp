@@ -276,7 +276,7 @@ std::string instantiation_name(const RunPlan& plan, const Scene& scene) {
   return std::visit([&](const auto& scheme) { return name_of(scheme, scene); }, plan.scheme);
 }
 
-PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int threads) {
+PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int threads, int threads_per_replica) {
   PlanExplanation out;
   out.instantiation = instantiation_name(plan, scene);
   // The run's own share (schemes/replica_runner.hpp): threads left over by the replicas go inside them where
@@ -287,6 +287,7 @@ PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int thread
       scene.run.storage == Storage::single_precision ? FloatSpeciesStore::claim_lanes : SpeciesStore::claim_lanes;
   RunOptions options;
   options.threads = threads;
+  options.threads_per_replica = threads_per_replica;
   const ThreadShare share = share_threads(scene, options, rounds ? static_cast<int>(lanes) : 1);
   out.replicas_in_flight = share.concurrent;
   out.threads_per_replica = share.inside;

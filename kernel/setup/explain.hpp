@@ -31,7 +31,7 @@ struct PlanExplanation {
 std::size_t stored_bytes_per_particle(const Scene& scene) noexcept;
 
 /// The explanation of `plan` (made from `scene`) run on `threads` threads.
-PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int threads);
+PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int threads, int threads_per_replica = 1);
 
 /// A one-line name of what runs, e.g. "dsmc<hard-sphere, gaussian-thermostat>, float storage (16 bytes per
 /// particle)".
