@@ -78,7 +78,7 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
   if (what.threads_per_replica > 1)
     std::printf(
         "threads      %d replica(s) at a time, each on %d threads: the collision stage in concurrent rounds, the "
-        "same bits as on one (docs/scaling.md); the rest of a step on one thread\n",
+        "same bits as on one but not faster where measured (docs/scaling.md)\n",
         what.replicas_in_flight, what.threads_per_replica);
   else if (threads > what.replicas_in_flight)
     std::printf("threads      %d replica(s) at a time, one thread each; %d thread(s) idle%s\n", what.replicas_in_flight,
