@@ -8,7 +8,7 @@ GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
 .PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-7-shear-rate fig-000-8-shear-rate fig-000-sec5 fig-000-6-elastic fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-1 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
-	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted intruder-cost accuracy-cost bench-effects stability
+	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted intruder-cost accuracy-cost bench-effects bench-threads stability
 
 all: build
 
@@ -232,6 +232,11 @@ bench: build
 # Cost of each effect (issue 8 item 3, perf/bench_effects.cpp): ratios to the plain scene, about 90 s.
 bench-effects: build
 	cmake --build $(BUILD) --target bench-effects
+
+# Threads: one replica with its threads inside it, and replicas on threads; `granmc run` wall time, one thread
+# against two (perf/thread_scaling.py, docs/scaling.md). About 3 minutes.
+bench-threads: build
+	$(PYTHON) perf/thread_scaling.py --granmc $(GRANMC)
 
 # Regression benchmarks (issue 10 item 4, perf/bench_compare.py, docs/performance.md): the ratios granmc / naive,
 # granmc / packed gather-scatter limit (DSMC stage and event scheme) and effect / plain, compared with

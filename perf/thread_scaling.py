@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Wall time of `granmc run` on one thread and on two, for the tables of docs/scaling.md ("Threads inside one
+replica"): one replica of 10^7 with its two threads inside it (--threads-per-replica 2), and two replicas of
+10^7 and of 10^6 with one thread each.
+
+Usage: /usr/bin/python3 perf/thread_scaling.py [--granmc build/bin/granmc] [--runs 3] [--work DIR]
+       (`make bench-threads`; about 1 minute per run on this 2-core host)
+
+The figure is the summary's wall_seconds (granmc's own wall time, set-up included). The one- and two-thread
+runs of a scene alternate, so that they share the state of the (shared, noisy) machine; the script prints
+every run, the speed-up of the medians, and for the runs with threads inside the replica the rounds'
+counts. It also checks that the two-thread files hold the bits of the one-thread files
+(tests/same_bits.py --files), and exits with status 1 if they do not.
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = os.path.join(ROOT, "drivers", "scenes", "scaling")
+CASES = [  # scene, the two-thread run's extra arguments, what it measures
+    ("one_replica_1e7.toml", ["--threads-per-replica", "2"], "one replica of 10^7, 2 threads inside it"),
+    ("two_replicas_1e7.toml", [], "two replicas of 10^7, one thread each"),
+    ("two_replicas_1e6.toml", [], "two replicas of 10^6, one thread each"),
+]
+
+
+def run(granmc, scene, threads, extra, out):
+    subprocess.run([granmc, "run", scene, "--threads", str(threads), "--quiet", "--out", out + ".h5",
+                    "--summary", out + ".json"] + extra, check=True)
+    with open(out + ".json") as f:
+        return json.load(f)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--granmc", default=os.path.join(ROOT, "build", "bin", "granmc"))
+    p.add_argument("--runs", type=int, default=3)
+    p.add_argument("--work", default=None, help="directory for the files (default: a temporary one)")
+    args = p.parse_args()
+    work = args.work or tempfile.mkdtemp(prefix="granmc-threads-")
+    os.makedirs(work, exist_ok=True)
+    same = True
+    print("| scene | 1 thread (s) | 2 threads (s) | speed-up of the medians | rounds, deferred, rerun in order |")
+    print("|---|---|---|---|---|")
+    for name, extra, what in CASES:
+        scene = os.path.join(SCENES, name)
+        stem = os.path.join(work, os.path.splitext(name)[0])
+        one, two = [], []
+        for k in range(args.runs):
+            one.append(run(args.granmc, scene, 1, [], f"{stem}.t1.{k}"))
+            two.append(run(args.granmc, scene, 2, extra, f"{stem}.t2.{k}"))
+        check = subprocess.run([sys.executable, os.path.join(ROOT, "tests", "same_bits.py"), "--files",
+                                f"{stem}.t1.0.h5", f"{stem}.t2.0.h5"], capture_output=True, text=True)
+        same = same and check.returncode == 0
+        w1 = sorted(s["wall_seconds"] for s in one)
+        w2 = sorted(s["wall_seconds"] for s in two)
+        rounds = "-"
+        if "collision_rounds" in two[0]:
+            s = two[0]
+            rounds = f"{s['collision_rounds']}, {s['collision_rounds_deferred']}, {s['collision_rounds_in_order']}"
+        print(f"| {what} | {', '.join(f'{w:.2f}' for w in w1)} | {', '.join(f'{w:.2f}' for w in w2)} | "
+              f"{statistics.median(w1) / statistics.median(w2):.2f} | {rounds} |")
+    print("two-thread files hold the one-thread bits" if same else "two-thread files DIFFER from the one-thread files")
+    return 0 if same else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
