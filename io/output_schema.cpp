@@ -411,6 +411,14 @@ std::vector<OutputRecord> declare() {
       "temperature): per-replica time average, then " +
           std::string(ci_text),
       member_of(intruder, &IntruderReport::temperature_ratio));
+  add("intruder/temperature_ratio_time_average", K::mean_ci, S, "",
+      "1D Gillespie intruder: T/T_B with <v1^2> the exact time average over the same window (v1 is constant "
+      "between events), per replica, then " +
+          std::string(ci_text),
+      [](const RunOutput& o, std::size_t) -> Value {
+        if (!intruder(o) || !intruder(o)->temperature_ratio_time_average) return {};
+        return *intruder(o)->temperature_ratio_time_average;
+      });
   add("intruder/bath_temperature", K::number, S, "energy", "T_B = m <v^2> of the bath (m = 1)",
       member_of(intruder, &IntruderReport::bath_temperature));
   add("intruder/events", K::count, S, "", "collisions of the intruder, all replicas",

@@ -102,6 +102,7 @@ void expect_same(const ReplicaSeries& a, const ReplicaSeries& b) {
   EXPECT_TRUE(same_bytes(x.angular_counts, y.angular_counts));
   EXPECT_EQ(x.newton_iterations, y.newton_iterations);
   EXPECT_EQ(x.bisection_fallbacks, y.bisection_fallbacks);
+  EXPECT_TRUE(same_bytes(std::vector<double>{x.v2_time_integral}, std::vector<double>{y.v2_time_integral}));
 }
 
 /// Distinct values in every field; `r` varies them between replicas. Odd doubles included.
@@ -147,6 +148,7 @@ ReplicaSeries filled_replica(int r, bool intruder) {
     in.angular_counts = doubles(3);
     in.newton_iterations = 17;
     in.bisection_fallbacks = 18;
+    in.v2_time_integral = 1e-200 * (r + 1);
     s.intruder = in;
   }
   return s;

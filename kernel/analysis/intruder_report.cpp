@@ -69,6 +69,13 @@ IntruderReport intruder_report(const Scene& scene, const RunResult& result) {
   if (scene.intruder->dimension == 1) {
     out.temperature_ratio =
         last_half_average(result, [&](const ReplicaSeries& s, std::size_t k) { return s.temperature[k] / tb; });
+    // The exact time average where the scheme kept it: M / (t_end - t_K/2) int v1^2 dt, then over replicas.
+    const double window = result.times.back() - result.times[first_stationary_sample(result.times.size())];
+    std::vector<double> ratio;
+    for (const ReplicaSeries& s : result.replicas)
+      if (s.intruder->v2_time_integral > 0.0 && window > 0.0)
+        ratio.push_back(scene.intruder->mass * s.intruder->v2_time_integral / window / tb);
+    if (ratio.size() == result.replicas.size()) out.temperature_ratio_time_average = replica_mean(ratio);
   } else {
     out.temperature_ratio = last_half_average(result, [&](const ReplicaSeries& s, std::size_t k) {
       return 0.5 * scene.intruder->mass * speed2(*s.intruder, k) / tb;  // T_tr = M <|v1|^2> / 2

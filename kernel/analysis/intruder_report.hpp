@@ -23,14 +23,16 @@ struct NeedleReport {
 };
 
 struct IntruderReport {
-  double bath_temperature = 0.0;                  // T_B = m <v^2> of the bath (m = 1)
-  MeanCI temperature_ratio;                       // T/T_B, T = M <v1^2> per degree of freedom (the needle's
-                                                  // translational temperature), over the last half of the samples
-  std::optional<double> temperature_ratio_exact;  // 002 eq. (22), or alpha for the power law with M = alpha
-  std::vector<double> speed_shell_edges;          // |v1| shells (velocity units)
-  MeanCISeries speed_distribution;                // density of |v1| per unit speed (twice that of v1)
-  std::uint64_t events = 0;                       // collisions, all replicas
-  std::optional<NeedleReport> needle;             // dimension 2
+  double bath_temperature = 0.0;  // T_B = m <v^2> of the bath (m = 1)
+  MeanCI temperature_ratio;       // T/T_B, T = M <v1^2> per degree of freedom (the needle's
+                                  // translational temperature), over the last half of the samples
+  std::optional<MeanCI> temperature_ratio_time_average;  // 1D Gillespie: T/T_B with <v1^2> the exact time
+                                                         // average over the same window (per replica)
+  std::optional<double> temperature_ratio_exact;         // 002 eq. (22), or alpha for the power law with M = alpha
+  std::vector<double> speed_shell_edges;                 // |v1| shells (velocity units)
+  MeanCISeries speed_distribution;                       // density of |v1| per unit speed (twice that of v1)
+  std::uint64_t events = 0;                              // collisions, all replicas
+  std::optional<NeedleReport> needle;                    // dimension 2
 };
 
 /// The report of an intruder scene's run (precondition: every replica has an IntruderSeries).

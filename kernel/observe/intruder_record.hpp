@@ -1,9 +1,11 @@
 #pragma once
 // What an intruder replica records at the sample times, shared by the Gillespie and DSMC schemes of the
 // 1D intruder (schemes/intruder_1d.hpp, intruder_dsmc_1d.hpp) and, for the shells, the needle.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "kernel/core/philox_stream.hpp"
@@ -41,6 +43,12 @@ class IntruderRecord1D {
 
   /// Samples taken so far (the index of the next sample time).
   [[nodiscard]] std::size_t samples() const noexcept { return series_.temperature.size(); }
+  /// Adds the integral of v1^2 dt over the part of [from, to) inside the stationary window [t_K/2, t_end]
+  /// (`window`), v1 constant on [from, to).
+  void add_stationary_v2(double v1, double from, double to, const std::pair<double, double>& window) noexcept {
+    const double inside = std::min(to, window.second) - std::max(from, window.first);
+    if (inside > 0.0) record_.v2_time_integral += v1 * v1 * inside;
+  }
   /// Counts one draw of a bath velocity (accepted or not).
   void count_sampling_attempt() noexcept { ++record_.sampling_attempts; }
 

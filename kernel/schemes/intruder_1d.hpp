@@ -2,7 +2,8 @@
 // The Gillespie algorithm for a point intruder of mass M in a bath of point particles of mass m = 1 on a
 // line (002 sec. 3.1), one replica. Between collisions the intruder's velocity v1 is constant, so the
 // collision rate phi(v1) = phi_+(v1) + phi_-(v1) (002 eq. 7) is too:
-//   1. waiting time dt = -ln(xi_1) / phi(v1) (002 eq. 10); observations that fall inside it see v1;
+//   1. waiting time dt = -ln(xi_1) / phi(v1) (002 eq. 10); observations that fall inside it see v1, and
+//      v1^2 dt adds to the exact time integral of v1^2 over the stationary window;
 //   2. side: right with probability phi_+ / phi (002 eq. 11);
 //   3. the bath particle's velocity from g_+ or g_- (002 eqs. 14, 17), sampled exactly by the bath law
 //      (collide/bath_*.hpp; g_-(v; v1) = g_+(-v; -v1) by symmetry of the bath);
@@ -11,6 +12,7 @@
 // rejection attempts of step 3.
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "kernel/core/philox_stream.hpp"
@@ -30,6 +32,9 @@ ReplicaSeries run_intruder_1d(const Scene& scene, std::uint64_t replica, const s
   IntruderRecord1D record(scene, times.size());
   double v1 = initial_intruder_velocity(scene, rng);
 
+  // The stationary window of the report (observe/gas_series.hpp, first_stationary_sample), over which the
+  // exact time average of v1^2 is kept.
+  const std::pair<double, double> window{times[first_stationary_sample(times.size())], times.back()};
   double t = 0.0;
   std::uint64_t event = 0;
   auto observe = [&] {
@@ -41,6 +46,7 @@ ReplicaSeries run_intruder_1d(const Scene& scene, std::uint64_t replica, const s
     const double flux = flux_plus + flux_minus;  // 002 eq. (7)
     const RandomBlock draw = rng.block(RngPurpose::intruder_event, 0, event, 0);
     const double next = t - std::log(uniform_open(draw[0])) / flux;  // 002 eq. (10)
+    record.add_stationary_v2(v1, t, next, window);
     while (record.samples() < times.size() && times[record.samples()] <= next) observe();
     if (record.samples() == times.size()) break;
     t = next;
