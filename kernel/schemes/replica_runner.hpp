@@ -1,7 +1,8 @@
 #pragma once
 // Runs the replicas of a scene in parallel (OpenMP), each from its own random stream, and collects
 // their series in replica order: the result is the same for any thread count. Threads beyond the replicas go
-// inside them, where the scheme can use them (share_threads). With RunOptions'
+// inside them where the scheme can use them and RunOptions::threads_per_replica allows (share_threads). With
+// RunOptions'
 // replica_offset and replica_stride it runs only its share (MPI ranks) and leaves the rest empty.
 #include <omp.h>
 
