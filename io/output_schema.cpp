@@ -412,8 +412,8 @@ std::vector<OutputRecord> declare() {
           std::string(ci_text),
       member_of(intruder, &IntruderReport::temperature_ratio));
   add("intruder/temperature_ratio_time_average", K::mean_ci, S, "",
-      "1D Gillespie intruder: T/T_B with <v1^2> the exact time average over the same window (v1 is constant "
-      "between events), per replica, then " +
+      "Gillespie intruder and needle: T/T_B with <|v1|^2> the exact time average over the same window (v1 is "
+      "constant between events), per replica, then " +
           std::string(ci_text),
       [](const RunOutput& o, std::size_t) -> Value {
         if (!intruder(o) || !intruder(o)->temperature_ratio_time_average) return {};
@@ -455,6 +455,14 @@ std::vector<OutputRecord> declare() {
   add("intruder/rotational_temperature_ratio", K::mean_ci, S, "",
       "needle: T_rot/T_B, T_rot = I <omega^2>, over the last half of the samples; " + std::string(ci_text),
       member_of(needle, &NeedleReport::rotational_temperature_ratio));
+  add("intruder/rotational_temperature_ratio_time_average", K::mean_ci, S, "",
+      "needle: T_rot/T_B with <omega^2> the exact time average over the same window, per replica, then " +
+          std::string(ci_text),
+      member_of(needle, &NeedleReport::rotational_temperature_ratio_time_average));
+  add("intruder/R_time_average", K::mean_ci, S, "",
+      "needle: R (002 eq. 34) from the exact time averages over the same window, per replica, then " +
+          std::string(ci_text),
+      member_of(needle, &NeedleReport::correlation_time_average));
   add("intruder/newton_iterations", K::count, S, "", "needle: Newton steps for the event times (002 eq. 28)",
       member_of(needle, &NeedleReport::newton_iterations));
   add("intruder/bisection_fallbacks", K::count, S, "", "needle: bisection steps taken instead of a Newton step",

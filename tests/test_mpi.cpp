@@ -102,7 +102,8 @@ void expect_same(const ReplicaSeries& a, const ReplicaSeries& b) {
   EXPECT_TRUE(same_bytes(x.angular_counts, y.angular_counts));
   EXPECT_EQ(x.newton_iterations, y.newton_iterations);
   EXPECT_EQ(x.bisection_fallbacks, y.bisection_fallbacks);
-  EXPECT_TRUE(same_bytes(std::vector<double>{x.v2_time_integral}, std::vector<double>{y.v2_time_integral}));
+  EXPECT_TRUE(same_bytes(std::vector<double>{x.v2_time_integral, x.w2_time_integral, x.v2w2_time_integral},
+                         std::vector<double>{y.v2_time_integral, y.w2_time_integral, y.v2w2_time_integral}));
 }
 
 /// Distinct values in every field; `r` varies them between replicas. Odd doubles included.
@@ -149,6 +150,8 @@ ReplicaSeries filled_replica(int r, bool intruder) {
     in.newton_iterations = 17;
     in.bisection_fallbacks = 18;
     in.v2_time_integral = 1e-200 * (r + 1);
+    in.w2_time_integral = 2e-200 * (r + 1);
+    in.v2w2_time_integral = 3e-200 * (r + 1);
     s.intruder = in;
   }
   return s;

@@ -25,6 +25,11 @@ MeanCISeries count_density(const RunResult& result, double width,
       density.size(), density.front().size(), [&](std::size_t r) -> const auto& { return density[r]; });
 }
 
+/// The length of the stationary window [t_K/2, t_end] of the samples.
+double stationary_window_length(const RunResult& result) {
+  return result.times.back() - result.times[first_stationary_sample(result.times.size())];
+}
+
 NeedleReport needle_report(const Scene& scene, const RunResult& result) {
   const IntruderConfig& in = *scene.intruder;
   const double inertia = needle_inertia(in);
@@ -50,6 +55,16 @@ NeedleReport needle_report(const Scene& scene, const RunResult& result) {
     out.bisection_fallbacks += s.intruder->bisection_fallbacks;
   }
   out.correlation = replica_mean(r);
+  // The same from the exact time integrals (v1 and omega are constant between events).
+  const double window = stationary_window_length(result);
+  std::vector<double> rotational, correlation;
+  for (const ReplicaSeries& s : result.replicas) {
+    const IntruderSeries& i = *s.intruder;
+    rotational.push_back(inertia * i.w2_time_integral / window / tb);
+    correlation.push_back(i.v2w2_time_integral * window / (i.v2_time_integral * i.w2_time_integral));  // eq. (34)
+  }
+  out.rotational_temperature_ratio_time_average = replica_mean(rotational);
+  out.correlation_time_average = replica_mean(correlation);
   const std::size_t shells = result.replicas.front().intruder->angular_counts.size();
   const double width = scene.histogram.radius / static_cast<double>(shells);
   for (std::size_t k = 0; k <= shells; ++k) out.angular_shell_edges.push_back(width * static_cast<double>(k));
@@ -69,19 +84,20 @@ IntruderReport intruder_report(const Scene& scene, const RunResult& result) {
   if (scene.intruder->dimension == 1) {
     out.temperature_ratio =
         last_half_average(result, [&](const ReplicaSeries& s, std::size_t k) { return s.temperature[k] / tb; });
-    // The exact time average where the scheme kept it: M / (t_end - t_K/2) int v1^2 dt, then over replicas.
-    const double window = result.times.back() - result.times[first_stationary_sample(result.times.size())];
-    std::vector<double> ratio;
-    for (const ReplicaSeries& s : result.replicas)
-      if (s.intruder->v2_time_integral > 0.0 && window > 0.0)
-        ratio.push_back(scene.intruder->mass * s.intruder->v2_time_integral / window / tb);
-    if (ratio.size() == result.replicas.size()) out.temperature_ratio_time_average = replica_mean(ratio);
   } else {
     out.temperature_ratio = last_half_average(result, [&](const ReplicaSeries& s, std::size_t k) {
       return 0.5 * scene.intruder->mass * speed2(*s.intruder, k) / tb;  // T_tr = M <|v1|^2> / 2
     });
     out.needle = needle_report(scene, result);
   }
+  // The exact time average where the scheme kept it: M / (d (t_end - t_K/2)) int |v1|^2 dt, then over replicas.
+  const double window = stationary_window_length(result);
+  const double dof = scene.intruder->dimension == 1 ? 1.0 : 2.0;
+  std::vector<double> ratio;
+  for (const ReplicaSeries& s : result.replicas)
+    if (s.intruder->v2_time_integral > 0.0 && window > 0.0)
+      ratio.push_back(scene.intruder->mass * s.intruder->v2_time_integral / (dof * window) / tb);
+  if (ratio.size() == result.replicas.size()) out.temperature_ratio_time_average = replica_mean(ratio);
   const std::size_t shells = result.replicas.front().intruder->speed_counts.size();
   const double width = scene.histogram.radius / static_cast<double>(shells);
   for (std::size_t k = 0; k <= shells; ++k) out.speed_shell_edges.push_back(width * static_cast<double>(k));

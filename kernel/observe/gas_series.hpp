@@ -40,9 +40,12 @@ struct IntruderSeries {
                                           // (output.histogram shells, radius in 1/time units)
   std::uint64_t newton_iterations = 0;    // needle: Newton steps for the event times (002 eq. 28)
   std::uint64_t bisection_fallbacks = 0;  // needle: bisection steps taken instead of a Newton step
-  // 1D Gillespie intruder: the exact integral of v1^2 dt over the stationary window [t_K/2, t_end] (v1 is
-  // constant between events), 0 where the scheme does not track it.
+  // Gillespie intruder and needle: exact integrals over the stationary window [t_K/2, t_end] (the velocities
+  // are constant between events) of |v1|^2 dt and, for the needle, omega^2 dt and |v1|^2 omega^2 dt; 0 where
+  // the scheme does not track them.
   double v2_time_integral = 0.0;
+  double w2_time_integral = 0.0;
+  double v2w2_time_integral = 0.0;
 };
 
 /// What a sheared replica records (000 secs. 2-3; observe/pressure_tensor.hpp), each at every sample time.
@@ -130,6 +133,8 @@ void visit_intruder_fields(S& s, Visit&& visit) {
   visit("newton_iterations", s.newton_iterations);
   visit("bisection_fallbacks", s.bisection_fallbacks);
   visit("v2_time_integral", s.v2_time_integral);
+  visit("w2_time_integral", s.w2_time_integral);
+  visit("v2w2_time_integral", s.v2w2_time_integral);
 }
 
 template <class S, class Visit>
@@ -170,9 +175,9 @@ void visit_replica_fields(S& s, Visit&& visit) {
 // tests/test_mpi.cpp); then update the sizes.
 static_assert(sizeof(SpeciesSeries) == 120, "SpeciesSeries changed: add the new field to visit_species_fields");
 static_assert(sizeof(ShearSeries) == 72, "ShearSeries changed: add the new field to visit_shear_fields");
-static_assert(sizeof(IntruderSeries) == 152, "IntruderSeries changed: add the new field to visit_intruder_fields");
+static_assert(sizeof(IntruderSeries) == 168, "IntruderSeries changed: add the new field to visit_intruder_fields");
 static_assert(sizeof(WeightedSeries) == 72, "WeightedSeries changed: add the new field to visit_weighted_fields");
-static_assert(sizeof(ReplicaSeries) == 576, "ReplicaSeries changed: add the new field to visit_replica_fields");
+static_assert(sizeof(ReplicaSeries) == 592, "ReplicaSeries changed: add the new field to visit_replica_fields");
 #endif
 
 /// The time-stepped scheme's concurrent collision rounds (schemes/concurrent_rounds.hpp), summed over replicas:

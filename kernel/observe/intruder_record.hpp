@@ -21,6 +21,17 @@ inline void add_to_shells(std::vector<double>& counts, double value, double radi
   if (shell < static_cast<double>(counts.size())) counts[static_cast<std::size_t>(shell)] += 1.0;
 }
 
+/// The stationary window of an intruder's report, [t_K/2, t_end] (gas_series.hpp, first_stationary_sample), over
+/// which the exact time integrals of IntruderSeries are kept.
+inline std::pair<double, double> stationary_window(const std::vector<double>& times) noexcept {
+  return {times[first_stationary_sample(times.size())], times.back()};
+}
+
+/// The length of [from, to) inside `window`, 0 if none.
+inline double time_inside(double from, double to, const std::pair<double, double>& window) noexcept {
+  return std::max(0.0, std::min(to, window.second) - std::max(from, window.first));
+}
+
 /// The 1D intruder's start: a Maxwellian at the scene's initial temperature, v1 ~ N(0, T(0) / M), from
 /// block (initial_velocity, 0, 0, 0).
 inline double initial_intruder_velocity(const Scene& scene, const RandomStream& rng) noexcept {
@@ -46,8 +57,7 @@ class IntruderRecord1D {
   /// Adds the integral of v1^2 dt over the part of [from, to) inside the stationary window [t_K/2, t_end]
   /// (`window`), v1 constant on [from, to).
   void add_stationary_v2(double v1, double from, double to, const std::pair<double, double>& window) noexcept {
-    const double inside = std::min(to, window.second) - std::max(from, window.first);
-    if (inside > 0.0) record_.v2_time_integral += v1 * v1 * inside;
+    record_.v2_time_integral += v1 * v1 * time_inside(from, to, window);
   }
   /// Counts one draw of a bath velocity (accepted or not).
   void count_sampling_attempt() noexcept { ++record_.sampling_attempts; }

@@ -32,9 +32,7 @@ ReplicaSeries run_intruder_1d(const Scene& scene, std::uint64_t replica, const s
   IntruderRecord1D record(scene, times.size());
   double v1 = initial_intruder_velocity(scene, rng);
 
-  // The stationary window of the report (observe/gas_series.hpp, first_stationary_sample), over which the
-  // exact time average of v1^2 is kept.
-  const std::pair<double, double> window{times[first_stationary_sample(times.size())], times.back()};
+  const std::pair<double, double> window = stationary_window(times);  // of the exact time average of v1^2
   double t = 0.0;
   std::uint64_t event = 0;
   auto observe = [&] {

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "kernel/collide/needle_flux.hpp"
@@ -42,6 +43,7 @@ ReplicaSeries run_intruder_needle(const Scene& scene, std::uint64_t replica, con
   const double radius = scene.histogram.radius;
   const std::size_t shells = static_cast<std::size_t>(scene.histogram.shells);
   const std::size_t first_stationary = first_stationary_sample(times.size());
+  const std::pair<double, double> window = stationary_window(times);  // of the exact time integrals
 
   ReplicaSeries series;
   IntruderSeries record;
@@ -85,6 +87,13 @@ ReplicaSeries run_intruder_needle(const Scene& scene, std::uint64_t replica, con
     const double e = -std::log(uniform_open52(draw[0], draw[1]));               // -ln xi_3, 002 eq. (27)
     const double flight = NeedleFlight(needle, state).event_time(e, counters);  // 002 eqs. (27)-(28)
     const double next = t + flight;
+    {  // v1 and omega are constant over the flight: their exact time integrals over the stationary window
+      const double inside = time_inside(t, next, window);
+      const double v2 = state.vx * state.vx + state.vy * state.vy, w2 = state.omega * state.omega;
+      record.v2_time_integral += v2 * inside;
+      record.w2_time_integral += w2 * inside;
+      record.v2w2_time_integral += v2 * w2 * inside;
+    }
     while (k < times.size() && times[k] <= next) observe();
     if (k == times.size()) break;
     t = next;
