@@ -255,6 +255,10 @@ int cli_main(int argc, char** argv) {
   sweep_cmd->add_option("--out-dir", sweep.out_dir,
                         "Directory of the outputs and index.json (default: <sweep name>/ in the current directory)");
   sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
+  sweep_cmd
+      ->add_option("--threads-per-replica", sweep.threads_per_replica,
+                   "As for granmc run: at most this many threads inside one replica (default 1: docs/scaling.md)")
+      ->check(CLI::Range(1, 4096));
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress lines, no notes on skipped scenes, no closing message");
 
   CLI::App* format_cmd = app.add_subcommand(

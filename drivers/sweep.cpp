@@ -102,7 +102,7 @@ std::string summary_name(const SweepScene& s) { return s.name + ".json"; }
 /// Runs one scene of the sweep as `granmc run` would, writing its two files into `dir`.
 void run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& args) {
   run_job(s.scene, make_plan(s.scene), {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads,
-          args.quiet);
+          args.quiet, args.threads_per_replica);
 }
 
 nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, const std::vector<std::string>& hashes,

@@ -11,9 +11,10 @@
 namespace granmc {
 
 struct SweepArgs {
-  std::string sweep;    // the sweep file
-  std::string out_dir;  // empty: the sweep file's stem, in the current directory
-  int threads = 0;      // 0: the OpenMP default
+  std::string sweep;            // the sweep file
+  std::string out_dir;          // empty: the sweep file's stem, in the current directory
+  int threads = 0;              // 0: the OpenMP default
+  int threads_per_replica = 1;  // at most this many inside one replica (run_job)
   bool quiet = false;
 };
 

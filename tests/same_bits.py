@@ -4,7 +4,7 @@ compares the HDF5 files object by object: every dataset's type, shape and bytes,
 that describe the machine or the build (wall_seconds, threads, version).
 
     tests/same_bits.py --reference OLD/bin/granmc --candidate build/bin/granmc [--particles 3000]
-                       [--replicas 3] [--threads 2] [--work DIR] [SCENE.toml ...]
+                       [--replicas 3] [--threads 2] [--threads-per-replica 1] [--work DIR] [SCENE.toml ...]
 
 A scene is shrunk to at most --particles particles over all species (each species by the same factor, so the
 density ratio holds) and --replicas replicas through a one-scene sweep file (`granmc sweep`), so the whole set
@@ -66,9 +66,10 @@ def shrunk_sweep(scene_path, particles, replicas, folder):
     return path
 
 
-def run(granmc, sweep, out_dir, threads, reuse):
+def run(granmc, sweep, out_dir, threads, reuse, threads_per_replica=1):
     """The HDF5 file of the sweep's one scene run by `granmc` in out_dir; with `reuse`, a file already there
-    from the same sweep text is kept (the reference build's files, between calls with the same --work)."""
+    from the same sweep text is kept (the reference build's files, between calls with the same --work).
+    threads_per_replica > 1 is passed on as --threads-per-replica."""
     done = os.path.join(out_dir, "sweep.toml")
     with open(sweep) as f:
         text = f.read()
@@ -76,7 +77,9 @@ def run(granmc, sweep, out_dir, threads, reuse):
         (h5,) = [os.path.join(out_dir, n) for n in os.listdir(out_dir) if n.endswith(".h5")]
         return h5
     shutil.rmtree(out_dir, ignore_errors=True)
-    subprocess.run([granmc, "sweep", sweep, "--out-dir", out_dir, "--threads", str(threads), "--quiet"], check=True)
+    inside = ["--threads-per-replica", str(threads_per_replica)] if threads_per_replica > 1 else []
+    subprocess.run([granmc, "sweep", sweep, "--out-dir", out_dir, "--threads", str(threads), "--quiet"] + inside,
+                   check=True)
     (h5,) = [os.path.join(out_dir, n) for n in os.listdir(out_dir) if n.endswith(".h5")]
     with open(done, "w") as f:
         f.write(text)
@@ -137,6 +140,9 @@ def main():
     p.add_argument("--particles", type=int, default=3000, help="at most this many particles per replica")
     p.add_argument("--replicas", type=int, default=3)
     p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--threads-per-replica", type=int, default=1,
+                   help="the candidate's threads inside a replica (granmc sweep --threads-per-replica; the "
+                   "time-stepped scheme's concurrent collision rounds, docs/scaling.md)")
     p.add_argument("--work", help="keep the files here (default: a temporary directory); the reference build's "
                    "files found there from the same sweep are reused")
     p.add_argument("--files", nargs=2, metavar="H5", help="compare two existing files instead")
@@ -155,7 +161,8 @@ def main():
         folder = os.path.join(work, name)
         os.makedirs(folder, exist_ok=True)
         sweep = shrunk_sweep(scene, args.particles, args.replicas, folder)
-        files = [run(exe, sweep, os.path.join(folder, tag), args.threads, reuse=tag == "reference")
+        files = [run(exe, sweep, os.path.join(folder, tag), args.threads, reuse=tag == "reference",
+                     threads_per_replica=args.threads_per_replica if tag == "candidate" else 1)
                  for tag, exe in (("reference", args.reference), ("candidate", args.candidate))]
         diff = differences(*files)
         shrunk = os.path.join(folder, "shrunk.toml")
