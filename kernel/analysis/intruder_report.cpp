@@ -27,7 +27,8 @@ MeanCISeries count_density(const RunResult& result, double width,
 
 /// The length of the stationary window [t_K/2, t_end] of the samples.
 double stationary_window_length(const RunResult& result) {
-  return result.times.back() - result.times[first_stationary_sample(result.times.size())];
+  const auto [from, to] = stationary_window(result.times);
+  return to - from;
 }
 
 NeedleReport needle_report(const Scene& scene, const RunResult& result) {

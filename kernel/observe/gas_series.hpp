@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernel/core/sym_tensor.hpp"
@@ -16,6 +17,11 @@ namespace granmc {
 /// Time averages and speed histograms are taken over them; with samples = 1 (S = 2), the final state only
 /// (as 001 sec. 5.3 takes its histograms).
 constexpr std::size_t first_stationary_sample(std::size_t sample_times) noexcept { return sample_times / 2; }
+
+/// The same window in time, [t_{S/2}, t_{S-1}]: the exact time integrals of IntruderSeries run over it.
+inline std::pair<double, double> stationary_window(const std::vector<double>& times) noexcept {
+  return {times[first_stationary_sample(times.size())], times.back()};
+}
 
 struct SpeciesSeries {
   std::vector<double> temperature;      // T_i = m_i <V^2> / 3 (energy units)

@@ -21,12 +21,6 @@ inline void add_to_shells(std::vector<double>& counts, double value, double radi
   if (shell < static_cast<double>(counts.size())) counts[static_cast<std::size_t>(shell)] += 1.0;
 }
 
-/// The stationary window of an intruder's report, [t_K/2, t_end] (gas_series.hpp, first_stationary_sample), over
-/// which the exact time integrals of IntruderSeries are kept.
-inline std::pair<double, double> stationary_window(const std::vector<double>& times) noexcept {
-  return {times[first_stationary_sample(times.size())], times.back()};
-}
-
 /// The length of [from, to) inside `window`, 0 if none.
 inline double time_inside(double from, double to, const std::pair<double, double>& window) noexcept {
   return std::max(0.0, std::min(to, window.second) - std::max(from, window.first));

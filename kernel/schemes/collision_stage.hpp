@@ -220,7 +220,7 @@ class BatchedStage {
     }
   }
 
-  /// The running majorants and tallies, per pair.
+  /// The running majorants, per pair.
   [[nodiscard]] std::span<const double> majorants() const noexcept { return {majorant_, n_pairs_}; }
   /// Adds a collision's terms to its pair's tally.
   void add_outcome(const Outcome& o) noexcept { add(tally_[one_pair ? 0 : o.q], o); }
