@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <utility>
 
 #include "granmc/version.hpp"
@@ -52,13 +53,24 @@ const NeedleReport* needle(const RunOutput& o) {
 }
 const ViscosityReport* viscosity(const RunOutput& o) { return o.report.viscosity ? &*o.report.viscosity : nullptr; }
 
-/// The accessor of `member` of the part `part` gives, or of nothing when the run has no such part.
+template <class T>
+constexpr bool is_optional = false;
+template <class T>
+constexpr bool is_optional<std::optional<T>> = true;
+
+/// The accessor of `member` of the part `part` gives, or of nothing when the run has no such part (or the
+/// member is an empty optional).
 template <class Part, class T>
 std::function<Value(const RunOutput&, std::size_t)> member_of(const Part* (*part)(const RunOutput&), T Part::*member) {
   return [part, member](const RunOutput& o, std::size_t) -> Value {
     const Part* p = part(o);
     if (p == nullptr) return {};
-    return p->*member;
+    if constexpr (is_optional<T>) {
+      if (!(p->*member)) return {};
+      return *(p->*member);
+    } else {
+      return p->*member;
+    }
   };
 }
 
@@ -413,22 +425,16 @@ std::vector<OutputRecord> declare() {
       member_of(intruder, &IntruderReport::temperature_ratio));
   add("intruder/temperature_ratio_time_average", K::mean_ci, S, "",
       "Gillespie intruder and needle: T/T_B with <|v1|^2> the exact time average over the same window (v1 is "
-      "constant between events), per replica, then " +
+      "constant between events; absent with one sample, an empty window), per replica, then " +
           std::string(ci_text),
-      [](const RunOutput& o, std::size_t) -> Value {
-        if (!intruder(o) || !intruder(o)->temperature_ratio_time_average) return {};
-        return *intruder(o)->temperature_ratio_time_average;
-      });
+      member_of(intruder, &IntruderReport::temperature_ratio_time_average));
   add("intruder/bath_temperature", K::number, S, "energy", "T_B = m <v^2> of the bath (m = 1)",
       member_of(intruder, &IntruderReport::bath_temperature));
   add("intruder/events", K::count, S, "", "collisions of the intruder, all replicas",
       member_of(intruder, &IntruderReport::events));
   add("intruder/temperature_ratio_exact", K::number, S, "",
       "exact stationary T/T_B where it is known (002 eq. 22; alpha for the power law with M = alpha)",
-      [](const RunOutput& o, std::size_t) -> Value {
-        if (!intruder(o) || !intruder(o)->temperature_ratio_exact) return {};
-        return *intruder(o)->temperature_ratio_exact;
-      });
+      member_of(intruder, &IntruderReport::temperature_ratio_exact));
   add("intruder/speed_shell_edges", K::numbers, S, "velocity", "edges of the |v1| shells",
       member_of(intruder, &IntruderReport::speed_shell_edges));
   add("intruder/speed_distribution", K::series, S, "1/velocity",
@@ -456,11 +462,13 @@ std::vector<OutputRecord> declare() {
       "needle: T_rot/T_B, T_rot = I <omega^2>, over the last half of the samples; " + std::string(ci_text),
       member_of(needle, &NeedleReport::rotational_temperature_ratio));
   add("intruder/rotational_temperature_ratio_time_average", K::mean_ci, S, "",
-      "needle: T_rot/T_B with <omega^2> the exact time average over the same window, per replica, then " +
+      "needle: T_rot/T_B with <omega^2> the exact time average over the same window (absent with one sample), "
+      "per replica, then " +
           std::string(ci_text),
       member_of(needle, &NeedleReport::rotational_temperature_ratio_time_average));
   add("intruder/R_time_average", K::mean_ci, S, "",
-      "needle: R (002 eq. 34) from the exact time averages over the same window, per replica, then " +
+      "needle: R (002 eq. 34) from the exact time averages over the same window (absent with one sample), per "
+      "replica, then " +
           std::string(ci_text),
       member_of(needle, &NeedleReport::correlation_time_average));
   add("intruder/newton_iterations", K::count, S, "", "needle: Newton steps for the event times (002 eq. 28)",

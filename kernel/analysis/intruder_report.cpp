@@ -61,11 +61,14 @@ NeedleReport needle_report(const Scene& scene, const RunResult& result) {
   std::vector<double> rotational, correlation;
   for (const ReplicaSeries& s : result.replicas) {
     const IntruderSeries& i = *s.intruder;
+    if (!(window > 0.0 && i.v2_time_integral > 0.0 && i.w2_time_integral > 0.0)) break;
     rotational.push_back(inertia * i.w2_time_integral / window / tb);
     correlation.push_back(i.v2w2_time_integral * window / (i.v2_time_integral * i.w2_time_integral));  // eq. (34)
   }
-  out.rotational_temperature_ratio_time_average = replica_mean(rotational);
-  out.correlation_time_average = replica_mean(correlation);
+  if (rotational.size() == result.replicas.size()) {
+    out.rotational_temperature_ratio_time_average = replica_mean(rotational);
+    out.correlation_time_average = replica_mean(correlation);
+  }
   const std::size_t shells = result.replicas.front().intruder->angular_counts.size();
   const double width = scene.histogram.radius / static_cast<double>(shells);
   for (std::size_t k = 0; k <= shells; ++k) out.angular_shell_edges.push_back(width * static_cast<double>(k));

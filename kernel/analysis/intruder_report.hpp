@@ -14,14 +14,16 @@ namespace granmc {
 
 /// The 2D needle (002 sec. 3.2), over the last half of the samples.
 struct NeedleReport {
-  MeanCI rotational_temperature_ratio;               // T_rot/T_B, T_rot = I <omega^2>
-  MeanCI correlation;                                // R = <v^2 w^2> / (<v^2> <w^2>) (002 eq. 34), per replica
-  MeanCI rotational_temperature_ratio_time_average;  // the same two with the exact time averages over the
-  MeanCI correlation_time_average;                   // window of the samples (v1, omega constant between events)
-  std::vector<double> angular_shell_edges;           // |omega| shells (1/time)
-  MeanCISeries angular_distribution;                 // density of |omega| per unit angular speed
-  std::uint64_t newton_iterations = 0;               // all replicas (002 eq. 28)
-  std::uint64_t bisection_fallbacks = 0;             // bisection steps taken instead of Newton steps
+  MeanCI rotational_temperature_ratio;  // T_rot/T_B, T_rot = I <omega^2>
+  MeanCI correlation;                   // R = <v^2 w^2> / (<v^2> <w^2>) (002 eq. 34), per replica
+  // The same two with the exact time averages over the window of the samples (v1, omega constant between
+  // events); absent when the window is empty (one sample) or the intruder never moved in it.
+  std::optional<MeanCI> rotational_temperature_ratio_time_average;
+  std::optional<MeanCI> correlation_time_average;
+  std::vector<double> angular_shell_edges;  // |omega| shells (1/time)
+  MeanCISeries angular_distribution;        // density of |omega| per unit angular speed
+  std::uint64_t newton_iterations = 0;      // all replicas (002 eq. 28)
+  std::uint64_t bisection_fallbacks = 0;    // bisection steps taken instead of Newton steps
 };
 
 struct IntruderReport {
