@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "drivers/build_id.hpp"
 #include "drivers/run_job.hpp"
 #include "drivers/sweep.hpp"
 #include "granmc/version.hpp"
@@ -221,7 +222,7 @@ int bath_command(const BathArgs& args) {
 
 int cli_main(int argc, char** argv) {
   CLI::App app{"granmc: direct-simulation Monte Carlo for granular gases (Boltzmann and Enskog equations)"};
-  app.set_version_flag("--version", std::string(version));
+  app.set_version_flag("--version", "granmc " + std::string(build_id()));
   app.require_subcommand(1);
 
   RunArgs run;
@@ -260,6 +261,9 @@ int cli_main(int argc, char** argv) {
                    "As for granmc run: at most this many threads inside one replica (default 1: docs/scaling.md)")
       ->check(CLI::Range(1, 4096));
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress lines, no notes on skipped scenes, no closing message");
+  sweep_cmd->add_flag("--keep-other-builds", sweep.keep_other_builds,
+                      "Keep the files of scenes done by another build of granmc (index.json says which); by default "
+                      "they run again");
 
   CLI::App* format_cmd = app.add_subcommand(
       "output-format", "Print the format of the HDF5 file and the JSON summary (Markdown, docs/output-format.md)");

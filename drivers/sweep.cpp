@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drivers/build_id.hpp"
 #include "drivers/cli.hpp"
 #include "drivers/run_job.hpp"
 #include "granmc/version.hpp"
@@ -63,10 +64,16 @@ std::optional<Sweep> load_checked_sweep(const std::string& path, std::string& me
   }
 }
 
-/// What an earlier run's index.json says of each scene, by name: its status and scene hash. Nothing when
-/// there is no readable index (every scene then runs).
-std::map<std::string, std::pair<std::string, std::string>> earlier_records(const fs::path& index) {
-  std::map<std::string, std::pair<std::string, std::string>> records;
+/// What an earlier run's index.json says of a scene.
+struct EarlierRecord {
+  std::string status, scene_hash;
+  std::string build;  // empty when the index predates build ids
+};
+
+/// What an earlier run's index.json says of each scene, by name. Nothing when there is no readable index
+/// (every scene then runs).
+std::map<std::string, EarlierRecord> earlier_records(const fs::path& index) {
+  std::map<std::string, EarlierRecord> records;
   std::ifstream in(index);
   if (!in) return records;
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
@@ -75,7 +82,7 @@ std::map<std::string, std::pair<std::string, std::string>> earlier_records(const
     const auto text = [&s](const char* key) {
       return s.is_object() && s.contains(key) && s[key].is_string() ? s[key].get<std::string>() : std::string();
     };
-    if (!text("name").empty()) records[text("name")] = {text("status"), text("scene_hash")};
+    if (!text("name").empty()) records[text("name")] = {text("status"), text("scene_hash"), text("build")};
   }
   return records;
 }
@@ -105,8 +112,10 @@ void run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& 
           args.quiet, args.threads_per_replica);
 }
 
+/// The index: per scene its status, scene hash and the build that made its files (this one for a scene
+/// not done yet).
 nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, const std::vector<std::string>& hashes,
-                          const std::vector<bool>& done) {
+                          const std::vector<std::string>& builds, const std::vector<bool>& done) {
   nlohmann::json scenes = nlohmann::json::array();
   for (std::size_t k = 0; k < sweep.scenes.size(); ++k) {
     const SweepScene& s = sweep.scenes[k];
@@ -115,9 +124,14 @@ nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, con
                       {"hdf5", hdf5_name(s)},
                       {"summary", summary_name(s)},
                       {"status", done[k] ? "done" : "pending"},
-                      {"scene_hash", hashes[k]}});
+                      {"scene_hash", hashes[k]},
+                      {"build", done[k] ? builds[k] : std::string(build_id())}});
   }
-  return {{"sweep", sweep_path}, {"base", sweep.base_path}, {"version", version}, {"scenes", scenes}};
+  return {{"sweep", sweep_path},
+          {"base", sweep.base_path},
+          {"version", version},
+          {"build", build_id()},
+          {"scenes", scenes}};
 }
 
 #ifdef GRANMC_HAVE_MPI
@@ -125,7 +139,8 @@ nlohmann::json index_json(const std::string& sweep_path, const Sweep& sweep, con
 /// its group, as `granmc run` spreads them): in round r, group g runs the (r groups + g)-th scene left.
 /// After each round every rank learns which scenes are done, and world rank 0 rewrites the index.
 void run_in_groups(const SweepArgs& args, const Sweep& sweep, const fs::path& dir,
-                   const std::vector<std::string>& hashes, std::vector<bool>& done, int groups, bool world_root) {
+                   const std::vector<std::string>& hashes, const std::vector<std::string>& builds,
+                   std::vector<bool>& done, int groups, bool world_root) {
   std::vector<std::size_t> todo;
   for (std::size_t k = 0; k < done.size(); ++k)
     if (!done[k]) todo.push_back(k);
@@ -149,7 +164,7 @@ void run_in_groups(const SweepArgs& args, const Sweep& sweep, const fs::path& di
     mpi::world_max(finished);
     for (std::size_t k = 0; k < done.size(); ++k)
       if (finished[k] != 0) done[k] = true;
-    if (world_root) write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, done));
+    if (world_root) write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, builds, done));
   }
 }
 #endif
@@ -172,6 +187,7 @@ int sweep_command(const SweepArgs& args) {
   const fs::path dir = args.out_dir.empty() ? fs::path(args.sweep).stem() : fs::path(args.out_dir);
   std::vector<std::string> hashes;
   for (const SweepScene& s : sweep.scenes) hashes.push_back(scene_hash(s.scene.source_text));
+  std::vector<std::string> builds(count, build_id());  // the build that made each scene's files
 
   try {
     // Rank 0 alone looks at what an earlier run left (it alone writes); every rank learns which scenes are
@@ -187,13 +203,30 @@ int sweep_command(const SweepArgs& args) {
       for (std::size_t k = 0; k < count; ++k) {
         const SweepScene& s = sweep.scenes[k];
         const auto record = records.find(s.name);
-        done[k] = record != records.end() && record->second == std::pair<std::string, std::string>{"done", hashes[k]} &&
-                  fs::exists(dir / hdf5_name(s)) && fs::exists(dir / summary_name(s));
-        if (done[k] && talk)
-          std::printf("granmc sweep: scene %zu of %zu (%s) skipped: done by an earlier run with the same scene\n",
-                      k + 1, count, s.name.c_str());
+        const bool same_scene_done = record != records.end() && record->second.status == "done" &&
+                                     record->second.scene_hash == hashes[k] && fs::exists(dir / hdf5_name(s)) &&
+                                     fs::exists(dir / summary_name(s));
+        if (!same_scene_done) continue;
+        const std::string& made_by = record->second.build;
+        if (made_by == build_id() || args.keep_other_builds) {
+          done[k] = true;
+          builds[k] = made_by;
+          if (talk && made_by == build_id())
+            std::printf("granmc sweep: scene %zu of %zu (%s) skipped: done by an earlier run with the same scene\n",
+                        k + 1, count, s.name.c_str());
+          else if (talk)
+            std::printf(
+                "granmc sweep: scene %zu of %zu (%s) kept: made by build %s, not this one (%s), kept as "
+                "--keep-other-builds asks\n",
+                k + 1, count, s.name.c_str(), made_by.empty() ? "(not recorded)" : made_by.c_str(), build_id());
+        } else if (talk) {
+          std::printf(
+              "granmc sweep: scene %zu of %zu (%s) runs again: its files were made by build %s, this is %s "
+              "(--keep-other-builds keeps them)\n",
+              k + 1, count, s.name.c_str(), made_by.empty() ? "(not recorded)" : made_by.c_str(), build_id());
+        }
       }
-      write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, done));
+      write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, builds, done));
       std::fflush(stdout);
     }
     for (std::size_t k = 0; k < count; ++k) done[k] = rank0_value(done[k]);
@@ -211,7 +244,7 @@ int sweep_command(const SweepArgs& args) {
     const int groups = static_cast<int>(std::min<std::size_t>(
         std::max<std::size_t>(to_run, 1), static_cast<std::size_t>(std::max(1, at.size / most_replicas))));
 #ifdef GRANMC_HAVE_MPI
-    if (groups > 1) run_in_groups(args, sweep, dir, hashes, done, groups, at.rank == 0);
+    if (groups > 1) run_in_groups(args, sweep, dir, hashes, builds, done, groups, at.rank == 0);
 #endif
     for (std::size_t k = 0; k < count; ++k) {
       if (done[k]) continue;
@@ -220,7 +253,7 @@ int sweep_command(const SweepArgs& args) {
       run_sweep_scene(s, dir, args);
       done[k] = true;
       if (at.rank != 0) continue;
-      write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, done));
+      write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, builds, done));
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       spent += seconds;
       ++ran;

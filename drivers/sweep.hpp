@@ -16,6 +16,7 @@ struct SweepArgs {
   int threads = 0;              // 0: the OpenMP default
   int threads_per_replica = 1;  // at most this many inside one replica (run_job)
   bool quiet = false;
+  bool keep_other_builds = false;  // keep the files of scenes done by another build of granmc (not rerun)
 };
 
 /// Exit status as cli_main's: 2 for a bad sweep file or scene (one message, nothing written).

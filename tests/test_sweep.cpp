@@ -223,6 +223,45 @@ TEST_F(Sweep, RerunSkipsWhatIsDoneAndRunsWhatChanged) {
   EXPECT_EQ(json("alpha/restitution0.6.json")["times"].size(), 5u);
 }
 
+TEST_F(Sweep, ScenesMadeByAnotherBuildRunAgainUnlessKept) {
+  // index.json records the build that made each scene's files (drivers/build_id.hpp); a scene done by
+  // another build runs again, or is kept with --keep-other-builds, each with a line saying which.
+  write("base.toml", base_scene);
+  write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.6, 0.8]\n");
+  ASSERT_EQ(granmc("sweep alpha.toml --quiet").status, 0);
+  nlohmann::json index = json("alpha/index.json");
+  const std::string this_build = index["build"];
+  EXPECT_EQ(index["scenes"][0]["build"], this_build);
+  EXPECT_EQ(index["scenes"][1]["build"], this_build);
+  // The first scene as another build left it, the second as an index from before build ids.
+  index["scenes"][0]["build"] = "0.0.1+000000000000";
+  index["scenes"][1].erase("build");
+  write("alpha/index.json", index.dump());
+
+  const Outcome kept = granmc("sweep alpha.toml --keep-other-builds");
+  ASSERT_EQ(kept.status, 0) << kept.stderr_text;
+  EXPECT_NE(kept.stdout_text.find("scene 1 of 2 (restitution0.6) kept: made by build 0.0.1+000000000000, not this "
+                                  "one (" +
+                                  this_build + ")"),
+            std::string::npos)
+      << kept.stdout_text;
+  EXPECT_NE(kept.stdout_text.find("scene 2 of 2 (restitution0.8) kept: made by build (not recorded)"),
+            std::string::npos)
+      << kept.stdout_text;
+  EXPECT_NE(kept.stdout_text.find("(0 run, 2 skipped)"), std::string::npos) << kept.stdout_text;
+  EXPECT_EQ(json("alpha/index.json")["scenes"][0]["build"], "0.0.1+000000000000");  // still says who made them
+
+  const Outcome rerun = granmc("sweep alpha.toml");
+  ASSERT_EQ(rerun.status, 0) << rerun.stderr_text;
+  EXPECT_NE(rerun.stdout_text.find("scene 1 of 2 (restitution0.6) runs again: its files were made by build "
+                                   "0.0.1+000000000000, this is " +
+                                   this_build),
+            std::string::npos)
+      << rerun.stdout_text;
+  EXPECT_NE(rerun.stdout_text.find("(2 run, 0 skipped)"), std::string::npos) << rerun.stdout_text;
+  for (const auto& scene : json("alpha/index.json")["scenes"]) EXPECT_EQ(scene["build"], this_build) << scene;
+}
+
 // Like a bad scene: exit 2 before any work, one line naming the sweep file and what is wrong, no output.
 TEST_F(Sweep, BadSweepFilesExitTwoWithOneMessageAndNoOutput) {
   write("base.toml", base_scene);
