@@ -13,10 +13,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "drivers/build_id.hpp"
 #include "drivers/run_job.hpp"
 #include "drivers/sweep.hpp"
 #include "granmc/version.hpp"
+#include "io/build_id.hpp"
 #include "io/output_schema.hpp"
 #include "io/scene_file.hpp"
 #include "io/theory_json.hpp"

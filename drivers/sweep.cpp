@@ -15,10 +15,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "drivers/build_id.hpp"
 #include "drivers/cli.hpp"
 #include "drivers/run_job.hpp"
 #include "granmc/version.hpp"
+#include "io/build_id.hpp"
 #include "io/summary_json.hpp"
 #include "io/sweep_file.hpp"
 #include "kernel/setup/run_plan.hpp"

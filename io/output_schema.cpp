@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "granmc/version.hpp"
+#include "io/build_id.hpp"
 
 namespace granmc {
 
@@ -96,6 +97,10 @@ std::vector<OutputRecord> declare() {
       [](const RunOutput& o, std::size_t) { return o.report.method; });
   add("version", K::text, S, "", "granmc's version",
       [](const RunOutput&, std::size_t) { return std::string(granmc::version); });
+  add("build", K::text, S, "",
+      "the build that wrote the file: version+commit (12 hex digits, -dirty when tracked files differed from it), "
+      "as granmc --version prints it",
+      [](const RunOutput&, std::size_t) { return std::string(build_id()); });
   add("units", K::text, S, "", "the units of every record",
       [](const RunOutput&, std::size_t) { return std::string(units_text); });
   add("wall_seconds", K::number, S, "s", "wall-clock time of the run",
@@ -647,7 +652,8 @@ const std::vector<OutputRecord>& output_records() {
 }
 
 const std::vector<std::string>& machine_records() {
-  static const std::vector<std::string> paths = {"wall_seconds",
+  static const std::vector<std::string> paths = {"build",
+                                                 "wall_seconds",
                                                  "threads",
                                                  "threads_per_replica",
                                                  "collision_rounds",

@@ -32,8 +32,8 @@ namespace granmc {
 /// The format of the files: a reader refuses a major version it does not know (a record renamed, moved
 /// or given another meaning); a minor version adds records only.
 inline constexpr int output_format_major = 2;
-inline constexpr int output_format_minor = 3;
-/// "2.3": the format_version attribute of every HDF5 file and key of every summary.
+inline constexpr int output_format_minor = 4;
+/// "2.4": the format_version attribute of every HDF5 file and key of every summary.
 std::string output_format_version();
 
 enum class RecordKind { text, number, count, flag, numbers, mean_ci, series, rows, count_rows, group };
@@ -70,8 +70,8 @@ struct OutputRecord {
 const std::vector<OutputRecord>& output_records();
 
 /// The top-level records that describe how and where the run ran, not its results: they differ between runs of
-/// one scene and seed on other thread or rank counts (wall_seconds, threads, threads_per_replica,
-/// collision_rounds..., ranks), when every other record is the same bits.
+/// one scene and seed by other builds or on other thread or rank counts (build, wall_seconds, threads,
+/// threads_per_replica, collision_rounds..., ranks), when every other record is the same bits.
 const std::vector<std::string>& machine_records();
 
 /// The HDF5 group name of species i: its name, with '/' replaced (the name itself is the attribute "name").

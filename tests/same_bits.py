@@ -29,7 +29,7 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MACHINE_ATTRIBUTES = {"wall_seconds", "threads", "threads_per_replica", "collision_rounds", "collision_rounds_deferred",
-                      "collision_rounds_in_order", "version"}
+                      "collision_rounds_in_order", "version", "build"}
 
 
 def scene_files(paths):

@@ -224,7 +224,7 @@ TEST_F(Sweep, RerunSkipsWhatIsDoneAndRunsWhatChanged) {
 }
 
 TEST_F(Sweep, ScenesMadeByAnotherBuildRunAgainUnlessKept) {
-  // index.json records the build that made each scene's files (drivers/build_id.hpp); a scene done by
+  // index.json records the build that made each scene's files (io/build_id.hpp); a scene done by
   // another build runs again, or is kept with --keep-other-builds, each with a line saying which.
   write("base.toml", base_scene);
   write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.6, 0.8]\n");

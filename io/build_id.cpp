@@ -1,4 +1,4 @@
-#include "drivers/build_id.hpp"
+#include "io/build_id.hpp"
 
 #include "granmc/build_id.hpp"
 
