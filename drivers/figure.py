@@ -373,7 +373,7 @@ def main():
                 else:
                     summary, hdf5 = runs[(ci_, x)]
                     pt = {"sim": simulated(summary, y), "wall_seconds": summary["wall_seconds"],
-                          "hdf5": os.path.relpath(hdf5, out)}
+                          "hdf5": os.path.relpath(hdf5, out), "builds": [build_of(summary)]}
                 pt.update({"x": x, "seed": next(sc for p_, sc in scenes.items() if p_[:2] == (ci_, x))["run"]["seed"],
                            "theory": theoretical(theory_of(args.granmc, point_scene(bases, curve, x_name, x),
                                                            os.path.join(out, "theory.toml")), y)})
@@ -414,7 +414,7 @@ def extrapolated(runs, rate_factors, y, out):
         slopes.append(c)
     own = rate_factors.index(1.0)
     return {"sim": sim, "wall_seconds": sum(summary["wall_seconds"] for summary, _ in runs),
-            "hdf5": [os.path.relpath(h, out) for _, h in runs],
+            "hdf5": [os.path.relpath(h, out) for _, h in runs], "builds": [build_of(summary) for summary, _ in runs],
             "zero_shear": {"a_star": a_star, "c": slopes, "at_own_rate": sims[own],
                            "steady": all(v["steady"] for v in viscosities)}}
 
@@ -474,11 +474,24 @@ def seed_note(results):
     return f"Seeds: {', '.join(str(s) for s in seeds)} (column seed); points with different seeds are independent.\n\n"
 
 
+def build_of(summary):
+    """The granmc build that wrote a summary (its `build` record, format 2.4 on)."""
+    return summary.get("build", "not recorded")
+
+
+def build_note(results):
+    """Which granmc build made the points: a later build may draw other random numbers (the same law)."""
+    builds = sorted({b for c in results for pt in c["points"] for b in pt.get("builds", [])})
+    return (f"Made by granmc {', '.join(builds)} (`granmc --version`); another build reruns every point and may give "
+            "another realization of the same law.\n\n")
+
+
 def write_table(fig, results, path):
     with open(path, "w") as f:
         f.write(f"# {fig['paper']}: {fig['caption']}\n\n")
         if any(c["points"] for c in results):
             f.write(seed_note(results))
+            f.write(build_note(results))
         zero_shear = "zero_shear" in fig
         if zero_shear:
             z = fig["zero_shear"]

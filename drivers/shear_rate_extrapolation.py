@@ -42,6 +42,12 @@ def points_of(sweep_dir):
     return points
 
 
+def builds_of(sweep_dir):
+    """The granmc builds that made a sweep's scenes, as its index records them."""
+    with open(os.path.join(sweep_dir, "index.json")) as f:
+        return {s.get("build", "not recorded") for s in json.load(f)["scenes"]}
+
+
 def theory(granmc, hdf5):
     """First-Sonine eta* and eta(alpha)/eta(1) of the scene a sweep ran (the text its HDF5 file stores)."""
     with open_results(hdf5) as h:
@@ -72,11 +78,13 @@ def main():
     fig, axes = plt.subplots(1, len(args.sweeps), figsize=(5.5 * len(args.sweeps), 4.5), squeeze=False)
     lines = [f"# eta* against the shear rate, extrapolated to a* -> 0 (`make {args.target}`)", "",
              "CI: 3.2 standard errors (p = 0.999). eta*(0): weighted fit eta* = eta*(0) + c a*^2 over the rates.", ""]
+    builds = set()
     for sweep, ax in zip(args.sweeps, axes[0]):
         stem = os.path.splitext(os.path.basename(sweep))[0]
         sweep_dir = os.path.join(args.out, stem)
         subprocess.run([args.granmc, "sweep", sweep, "--out-dir", sweep_dir], check=True)
         points = points_of(sweep_dir)
+        builds |= builds_of(sweep_dir)
         alphas = sorted({pt[0] for pt in points}, reverse=True)
         lines += [f"## {stem}", "",
                   "| alpha | a* at each rate | eta* at each rate (CI) | steady | c | eta*(a*->0) | CI | first Sonine eta* "
@@ -119,6 +127,8 @@ def main():
         ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, "shear_rate.png"), dpi=120)
+    lines[3:3] = [f"Made by granmc {', '.join(sorted(builds))} (`granmc --version`); another build reruns every "
+                  "scene and may give another realization of the same law.", ""]
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
