@@ -127,7 +127,7 @@ def main():
         ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, "shear_rate.png"), dpi=120)
-    lines[3:3] = [f"Made by granmc {', '.join(sorted(builds))} (`granmc --version`); another build reruns every "
+    lines[4:4] = [f"Made by granmc {', '.join(sorted(builds))} (`granmc --version`); another build reruns every "
                   "scene and may give another realization of the same law.", ""]
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
