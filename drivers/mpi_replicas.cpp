@@ -16,85 +16,6 @@ namespace {
 MPI_Comm run_communicator = MPI_COMM_WORLD;
 MPI_Comm run_comm() { return run_communicator; }
 
-static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_trivially_copyable_v<Vec3>);
-static_assert(sizeof(SymTensor) == 6 * sizeof(double) && std::is_trivially_copyable_v<SymTensor>);
-// The fields of a replica in message order are kernel/observe/gas_series.hpp's one list (visit_replica_fields),
-// walked by Put (writes each field) and Get (reads into it), so writing and reading cannot disagree. Optionals
-// go as a flag byte and, for a record, its fields when present; the energy residual always sends its value (0
-// when absent).
-struct Put {
-  ByteWriter& out;
-  template <class T>
-  void operator()(const char*, const T& v) {
-    out.value(v);
-  }
-  template <class T>
-  void operator()(const char*, const std::vector<T>& v) {
-    out.array(v);
-  }
-  void operator()(const char*, const std::vector<SpeciesSeries>& species) {
-    out.value(static_cast<std::uint64_t>(species.size()));
-    for (const SpeciesSeries& sp : species) visit_species_fields(sp, *this);
-  }
-  void operator()(const char*, const std::optional<double>& v) {
-    out.value(static_cast<std::uint8_t>(v.has_value()));
-    out.value(v.value_or(0.0));
-  }
-  void operator()(const char*, const std::optional<ShearSeries>& v) {
-    out.value(static_cast<std::uint8_t>(v.has_value()));
-    if (v) visit_shear_fields(*v, *this);
-  }
-  void operator()(const char*, const std::optional<IntruderSeries>& v) {
-    out.value(static_cast<std::uint8_t>(v.has_value()));
-    if (v) visit_intruder_fields(*v, *this);
-  }
-  void operator()(const char*, const std::optional<WeightedSeries>& v) {
-    out.value(static_cast<std::uint8_t>(v.has_value()));
-    if (v) visit_weighted_fields(*v, *this);
-  }
-};
-
-struct Get {
-  ByteReader& in;
-  template <class T>
-  void operator()(const char*, T& v) {
-    v = in.value<T>();
-  }
-  template <class T>
-  void operator()(const char*, std::vector<T>& v) {
-    v = in.array<T>();
-  }
-  void operator()(const char*, std::vector<SpeciesSeries>& species) {
-    const auto n = in.value<std::uint64_t>();  // one at a time: a corrupt count fails at the end of the bytes
-    for (std::uint64_t i = 0; i < n; ++i) visit_species_fields(species.emplace_back(), *this);
-  }
-  void operator()(const char* name, std::optional<double>& v) {
-    const bool present = flag(name);
-    const double value = in.value<double>();
-    if (present) v = value;
-  }
-  void operator()(const char* name, std::optional<ShearSeries>& v) {
-    if (flag(name)) visit_shear_fields(v.emplace(), *this);
-  }
-  void operator()(const char* name, std::optional<IntruderSeries>& v) {
-    if (flag(name)) visit_intruder_fields(v.emplace(), *this);
-  }
-  void operator()(const char* name, std::optional<WeightedSeries>& v) {
-    if (flag(name)) visit_weighted_fields(v.emplace(), *this);
-  }
-  bool flag(const char* what) {
-    const auto f = in.value<std::uint8_t>();
-    if (f > 1) throw std::runtime_error(std::string("replica message: bad ") + what + " flag");
-    return f == 1;
-  }
-};
-
-/// How many of `replicas` replicas a rank with this offset and stride runs.
-std::size_t own_count(std::size_t replicas, int offset, int stride) {
-  const auto o = static_cast<std::size_t>(offset), s = static_cast<std::size_t>(stride);
-  return replicas > o ? (replicas - o + s - 1) / s : 0;
-}
-
 void check(int code, const char* what) {
   if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI error in ") + what);
 }
@@ -104,36 +25,6 @@ constexpr std::size_t chunk_bytes = std::size_t{1} << 30;
 constexpr int tag_replicas = 1;
 
 }  // namespace
-
-void write_replica(ByteWriter& out, const ReplicaSeries& s) {
-  Put put{out};
-  visit_replica_fields(s, put);
-}
-
-ReplicaSeries read_replica(ByteReader& in) {
-  ReplicaSeries s;
-  Get get{in};
-  visit_replica_fields(s, get);
-  return s;
-}
-
-std::vector<std::byte> serialise_replicas(const std::vector<ReplicaSeries>& replicas, int offset, int stride) {
-  ByteWriter out;
-  out.value(static_cast<std::uint64_t>(own_count(replicas.size(), offset, stride)));
-  for (std::size_t r = static_cast<std::size_t>(offset); r < replicas.size(); r += static_cast<std::size_t>(stride))
-    write_replica(out, replicas[r]);
-  return out.release();
-}
-
-void deserialise_replicas(std::span<const std::byte> bytes, std::vector<ReplicaSeries>& replicas, int offset,
-                          int stride) {
-  ByteReader in(bytes);
-  if (in.value<std::uint64_t>() != own_count(replicas.size(), offset, stride))
-    throw std::runtime_error("replica message: wrong number of replicas");
-  for (std::size_t r = static_cast<std::size_t>(offset); r < replicas.size(); r += static_cast<std::size_t>(stride))
-    replicas[r] = read_replica(in);
-  if (!in.at_end()) throw std::runtime_error("replica message: bytes left after the last replica");
-}
 
 Session::Session(int& argc, char**& argv) {
   int provided = 0;
