@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "drivers/run_checkpoints.hpp"
 #include "drivers/run_job.hpp"
 #include "drivers/sweep.hpp"
 #include "granmc/version.hpp"
@@ -39,6 +40,9 @@ struct RunArgs {
   bool quiet = false;
   bool explain = false;
   std::string spread = "replicas";
+  std::string resume;              // a checkpoint to continue from (drivers/run_checkpoints.hpp)
+  double checkpoint_every = 10.0;  // minutes; 0: after every replica
+  bool no_checkpoints = false;
 };
 
 int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs& args) {
@@ -143,9 +147,34 @@ int run_command(const RunArgs& args) {
   const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
 
   const Place at = place();
+  // Checkpoints in one process only (drivers/run_checkpoints.hpp). An earlier run's checkpoint beside the output
+  // is never overwritten unasked: it is resumed (--resume) or deleted by the user.
+  const bool one_process = at.size == 1 && loaded->plan.spread != Spread::particles;
+  const CheckpointSettings settings{one_process && !args.no_checkpoints, args.checkpoint_every, args.resume};
+  std::optional<RunCheckpoints> checkpoints;
+  if (!all_ranks_ok(args.resume.empty() || one_process,
+                    "granmc: --resume: a checkpoint is resumed in one process, not under MPI\n"))
+    return exit_bad_input;
+  if (one_process) {
+    const std::string earlier = checkpoint_path(out);
+    if (settings.enabled && args.resume.empty() && std::filesystem::exists(earlier)) {
+      std::cerr << "granmc: " << earlier << " is the checkpoint of an earlier run of this output: continue it with "
+                << "--resume " << earlier << ", or delete it to start afresh\n";
+      return exit_bad_input;
+    }
+    try {
+      checkpoints.emplace(scene, out, settings);
+    } catch (const CheckpointError& e) {
+      std::cerr << "granmc: " << e.what() << "\n";
+      return exit_bad_input;
+    }
+    if (checkpoints->restored() > 0 && !args.quiet)
+      std::printf("granmc: %zu of %d replicas from %s\n", checkpoints->restored(), scene.run.replicas,
+                  args.resume.c_str());
+  }
   try {
-    const JobResult done =
-        run_job(scene, loaded->plan, {out, args.summary}, args.threads, args.quiet, args.threads_per_replica);
+    const JobResult done = run_job(scene, loaded->plan, {out, args.summary}, args.threads, args.quiet,
+                                   args.threads_per_replica, checkpoints ? &*checkpoints : nullptr);
     if (at.rank != 0) return exit_ok;  // rank 0 alone reports
     if (!args.quiet && at.size == 1) {
       std::printf("granmc %s: %s, %d replicas, %.1f s on %d threads -> %s%s%s\n", version, args.scene.c_str(),
@@ -157,6 +186,16 @@ int run_command(const RunArgs& args) {
                   args.summary.empty() ? "" : ", ", args.summary.c_str());
     }
     return exit_ok;
+  } catch (const RunInterrupted&) {
+    try {
+      const std::string& file = checkpoints->write_now();
+      std::cerr << "granmc: interrupted; " << checkpoints->finished() << " of " << scene.run.replicas
+                << " replicas finished and are kept in " << file << "; continue with: granmc run " << args.scene
+                << " --resume " << file << " (and the same --out, --summary and --seed)\n";
+    } catch (const std::exception& e) {
+      std::cerr << "granmc: interrupted, and " << e.what() << "\n";
+    }
+    return exit_interrupted;
   } catch (const std::exception& e) {
     return run_failure(e);
   }
@@ -244,6 +283,16 @@ int cli_main(int argc, char** argv) {
                    "(each replica is one system spread over all ranks, for systems larger than one machine; "
                    "docs/scaling.md)")
       ->check(CLI::IsMember({"replicas", "particles"}));
+  run_cmd->add_option("--resume", run.resume,
+                      "Continue the run of this scene that a checkpoint (OUT.checkpoint) holds: only the replicas it "
+                      "lacks run, and the files are those of an uninterrupted run (docs/scenes.md, \"Checkpoints\")");
+  run_cmd
+      ->add_option("--checkpoint-every", run.checkpoint_every,
+                   "Minutes between checkpoints of the finished replicas (OUT.checkpoint; 0: after each replica; "
+                   "default 10); one is also written on SIGINT or SIGTERM, and the run stops with status 3")
+      ->check(CLI::NonNegativeNumber);
+  run_cmd->add_flag("--no-checkpoints", run.no_checkpoints,
+                    "No checkpoints, and SIGINT or SIGTERM end the run at once with nothing kept");
   run_cmd->add_flag("--explain", run.explain,
                     "Print the kernel, the effects, the memory and a cost estimate, and run nothing");
 

@@ -66,14 +66,15 @@ bool rank0_value(bool value) {
 }
 
 JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet,
-                  int threads_per_replica) {
+                  int threads_per_replica, RunCheckpoints* checkpoints) {
   const bool spread_particles = plan.spread == Spread::particles;
   const Place at = place();
   const ProgressLine::Mode progress_mode = at.rank != 0 || quiet   ? ProgressLine::Mode::off
                                            : isatty(STDERR_FILENO) ? ProgressLine::Mode::terminal
                                                                    : ProgressLine::Mode::log;
   const int replicas_here = spread_particles ? scene.run.replicas : own_replicas(scene.run.replicas, at);
-  ProgressLine progress(static_cast<std::uint64_t>(replicas_here) * (scene.run.samples + 1), progress_mode);
+  const int to_run = replicas_here - static_cast<int>(checkpoints != nullptr ? checkpoints->restored() : 0);
+  ProgressLine progress(static_cast<std::uint64_t>(to_run) * (scene.run.samples + 1), progress_mode);
   RunOptions options;
   options.threads = threads;
   options.threads_per_replica = threads_per_replica;
@@ -86,6 +87,7 @@ JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& out
   const SingleRank ranks;
 #endif
   if (spread_particles) options.spread = &ranks;
+  if (checkpoints != nullptr) checkpoints->attach(options);
 
   const auto start = std::chrono::steady_clock::now();
   // Spread over the ranks, every rank holds every replica's series; otherwise rank 0 gathers them.
@@ -101,6 +103,7 @@ JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& out
   }
   write_hdf5(outputs.hdf5, scene, result, report);
   if (!outputs.summary.empty()) write_summary(outputs.summary, summary_json(scene, result, report));
+  if (checkpoints != nullptr) checkpoints->run_completed();
   return {wall, result.threads};
 }
 

@@ -1,18 +1,12 @@
 #include "io/summary_json.hpp"
 
-#include <unistd.h>
-
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
 #include <vector>
 
+#include "io/atomic_file.hpp"
 #include "io/output_schema.hpp"
 
 namespace granmc {
@@ -76,21 +70,8 @@ nlohmann::json summary_json(const Scene& scene, const RunResult& result, const R
 }
 
 void write_summary(const std::string& path, const nlohmann::json& summary) {
-  const std::string temporary = path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
-  auto fail = [&](const std::string& what) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write summary '" + path + "': " + what + " (" + reason + ")");
-  };
-  {
-    std::ofstream out(temporary, std::ios::out | std::ios::trunc);
-    if (!out) fail("cannot create '" + temporary + "'");
-    // error_handler::replace: an invalid UTF-8 byte in a name (e.g. the scene path) becomes U+FFFD, not a throw.
-    out << summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
-    out.close();
-    if (!out) fail("cannot write '" + temporary + "'");
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail("cannot rename '" + temporary + "' to it");
+  // error_handler::replace: an invalid UTF-8 byte in a name (e.g. the scene path) becomes U+FFFD, not a throw.
+  write_file_atomically(path, summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + '\n', "summary");
 }
 
 }  // namespace granmc

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the replicas of a scene in parallel (OpenMP), each from its own random stream, and collects
-// their series in replica order: the result is the same for any thread count. Threads beyond the replicas go
+// their series in replica order: the result is the same for any thread count, and the same when some replicas
+// come from a checkpoint (RunOptions::restored). Threads beyond the replicas go
 // inside them where the scheme can use them and RunOptions::threads_per_replica allows (share_threads). With
 // RunOptions'
 // replica_offset and replica_stride it runs only its share (MPI ranks) and leaves the rest empty.
@@ -54,19 +55,32 @@ RunResult run_replicas(const Scene& scene, const RunOptions& options, const Thre
   result.threads_per_replica = share.inside;
   if (share.inside > 1) omp_set_max_active_levels(2);  // the replicas' own teams inside the replicas' team
   std::exception_ptr failure;
+  bool stopped = false;
   const int stride = options.replica_stride;
   const int own = own_replicas(scene, options);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(share.concurrent)
   for (int k = 0; k < own; ++k) {
     const int r = options.replica_offset + k * stride;
+    ReplicaSeries& series = result.replicas[static_cast<std::size_t>(r)];
+    const ReplicaSeries* earlier = options.restored ? options.restored(static_cast<std::uint64_t>(r)) : nullptr;
+    if (earlier != nullptr) {
+      series = *earlier;  // from a checkpoint: the series this replica's run gives, bit for bit
+      continue;
+    }
     try {
-      result.replicas[static_cast<std::size_t>(r)] = run_one(static_cast<std::uint64_t>(r), result.times);
+      if (options.interrupted && options.interrupted()) throw RunInterrupted();
+      series = run_one(static_cast<std::uint64_t>(r), result.times);
+      if (options.on_replica) options.on_replica(static_cast<std::uint64_t>(r), series);
+    } catch (const RunInterrupted&) {
+#pragma omp atomic write
+      stopped = true;
     } catch (...) {
 #pragma omp critical(granmc_replica_failure)
       if (!failure) failure = std::current_exception();
     }
   }
   if (failure) std::rethrow_exception(failure);
+  if (stopped) throw RunInterrupted();
   return result;
 }
 

@@ -1,9 +1,19 @@
 #pragma once
+#include <cstdint>
 #include <functional>
+#include <stdexcept>
 
 #include "kernel/core/ranks.hpp"
+#include "kernel/observe/gas_series.hpp"
 
 namespace granmc {
+
+/// A run stopped on request (RunOptions::interrupted, or thrown by on_sample to stop a replica in flight): the
+/// replicas that finished were handed to RunOptions::on_replica; the others did not run.
+class RunInterrupted : public std::runtime_error {
+ public:
+  RunInterrupted() : std::runtime_error("the run was interrupted") {}
+};
 
 struct RunOptions {
   int threads = 0;  // OpenMP threads for the replicas; 0: the OpenMP default
@@ -20,6 +30,14 @@ struct RunOptions {
   // Not null: every replica is one system spread over these ranks (schemes/rank_wave_backend.hpp), the replicas
   // one after another; replica_offset and replica_stride are not read, and every rank returns every replica.
   const Ranks* spread = nullptr;
+  // Checkpoints (io/checkpoint.hpp, drivers/run_checkpoints.hpp), for the replicas run by run_replicas: not null,
+  // `restored(r)` is replica r's series from an earlier run (then it is not run again), or null; `on_replica(r,
+  // series)` is called from replica r's thread when it has finished; `interrupted()` true: no further replica
+  // starts, and run_replicas ends with RunInterrupted once the replicas in flight have ended (on_sample may throw
+  // RunInterrupted to end one at its next observation; its work is lost).
+  std::function<const ReplicaSeries*(std::uint64_t)> restored;
+  std::function<void(std::uint64_t, const ReplicaSeries&)> on_replica;
+  std::function<bool()> interrupted;
 };
 
 }  // namespace granmc

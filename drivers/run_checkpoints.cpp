@@ -1,0 +1,99 @@
+#include "drivers/run_checkpoints.hpp"
+
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+#include <utility>
+
+#include "io/build_id.hpp"
+
+namespace granmc {
+
+namespace {
+
+// Set by the first SIGINT or SIGTERM; a second one ends the process at once (the default action).
+std::atomic<bool> stop_requested{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void on_stop_signal(int signal) {
+  stop_requested.store(true);
+  std::signal(signal, SIG_DFL);
+}
+
+}  // namespace
+
+std::string checkpoint_path(const std::string& hdf5) { return hdf5 + ".checkpoint"; }
+
+RunCheckpoints::RunCheckpoints(const Scene& scene, const std::string& hdf5, const CheckpointSettings& settings)
+    : settings_(settings), path_(checkpoint_path(hdf5)), last_write_(std::chrono::steady_clock::now()) {
+  checkpoint_.build = build_id();
+  checkpoint_.scene_text = scene.source_text;
+  checkpoint_.seed = scene.run.seed;
+  checkpoint_.replicas = static_cast<std::uint64_t>(scene.run.replicas);
+  if (!settings_.resume.empty()) {
+    Checkpoint earlier = read_checkpoint(settings_.resume);
+    const std::string why =
+        checkpoint_mismatch(earlier, checkpoint_.build, checkpoint_.scene_text, checkpoint_.seed, checkpoint_.replicas);
+    if (!why.empty()) throw CheckpointError("cannot resume from '" + settings_.resume + "': " + why);
+    checkpoint_.finished = std::move(earlier.finished);
+    restored_ = checkpoint_.finished.size();
+  }
+  if (settings_.enabled) {
+    stop_requested.store(false);
+    std::signal(SIGINT, on_stop_signal);
+    std::signal(SIGTERM, on_stop_signal);
+  }
+}
+
+RunCheckpoints::~RunCheckpoints() {
+  if (settings_.enabled) {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+  }
+}
+
+void RunCheckpoints::attach(RunOptions& options) {
+  // The restored replicas are read only while the run lasts; on_replica adds others under the mutex, and a
+  // std::map's existing elements stay where they are.
+  options.restored = [this](std::uint64_t r) -> const ReplicaSeries* {
+    const std::lock_guard lock(mutex_);
+    const auto at = checkpoint_.finished.find(r);
+    return at == checkpoint_.finished.end() ? nullptr : &at->second;
+  };
+  if (!settings_.enabled) return;
+  options.on_replica = [this](std::uint64_t r, const ReplicaSeries& series) {
+    const std::lock_guard lock(mutex_);
+    checkpoint_.finished.emplace(r, series);
+    const double minutes =
+        std::chrono::duration<double, std::ratio<60>>(std::chrono::steady_clock::now() - last_write_).count();
+    if (minutes >= settings_.every_minutes && !stop_requested.load()) write_locked();
+  };
+  options.interrupted = [] { return stop_requested.load(); };
+  options.on_sample = [tick = std::move(options.on_sample)] {
+    if (tick) tick();
+    if (stop_requested.load()) throw RunInterrupted();
+  };
+}
+
+const std::string& RunCheckpoints::write_now() {
+  const std::lock_guard lock(mutex_);
+  write_locked();
+  return path_;
+}
+
+void RunCheckpoints::write_locked() {
+  write_checkpoint(path_, checkpoint_);
+  last_write_ = std::chrono::steady_clock::now();
+}
+
+void RunCheckpoints::run_completed() {
+  std::error_code ignored;
+  std::filesystem::remove(path_, ignored);
+}
+
+std::size_t RunCheckpoints::finished() const {
+  const std::lock_guard lock(mutex_);
+  return checkpoint_.finished.size();
+}
+
+}  // namespace granmc

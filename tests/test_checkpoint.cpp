@@ -1,0 +1,221 @@
+// Checkpoints and restart (io/checkpoint.hpp, drivers/run_checkpoints.hpp): the file round trip and its
+// refusals, and `granmc run` interrupted by SIGINT or killed with SIGKILL, then resumed, writing the files of
+// an uninterrupted run.
+#include <signal.h>
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "io/checkpoint.hpp"
+#include "io/output_schema.hpp"
+#include "tests/granmc_process.hpp"
+
+namespace granmc {
+namespace {
+
+namespace fs = std::filesystem;
+using granmc_test::Outcome;
+using granmc_test::slurp;
+
+Checkpoint small_checkpoint() {
+  Checkpoint c;
+  c.build = "0.1.0+0123456789ab";
+  c.scene_text = "[run]\nreplicas = 3\n";
+  c.seed = 7;
+  c.replicas = 3;
+  ReplicaSeries a, b;
+  a.temperature = {1.0, 0.5, 0.25};
+  a.collisions = {0.0, 10.0, 20.0};
+  b.temperature = {1.0, 0.6, 0.3};
+  b.intruder = IntruderSeries{};
+  b.intruder->velocity = {0.1, -0.2};
+  c.finished.emplace(0, a);
+  c.finished.emplace(2, b);
+  return c;
+}
+
+class Checkpoints : public granmc_test::GranmcDirectory {
+ protected:
+  Checkpoints() : GranmcDirectory("granmc_checkpoint_") {}
+
+  /// Starts `granmc args` in the background; returns its process id (its exit status goes to rc.txt).
+  pid_t start(const std::string& args) const {
+    fs::remove(dir_ / "pid.txt");
+    fs::remove(dir_ / "rc.txt");
+    const std::string cmd = "cd '" + dir_.string() + "' && sh -c '\"" GRANMC_EXECUTABLE "\" " + args +
+                            " >out.txt 2>err.txt & echo $! > pid.txt; wait $!; echo $? > rc.txt' &";
+    EXPECT_EQ(std::system(cmd.c_str()), 0);
+    for (int k = 0; k < 1000 && slurp(dir_ / "pid.txt").empty(); ++k) sleep_ms(5);
+    return static_cast<pid_t>(std::stol(slurp(dir_ / "pid.txt")));
+  }
+  /// Waits for the process started last to exit; its exit status (128 + signal when a signal ended it).
+  int wait_exit() const {
+    for (int k = 0; k < 60000 && slurp(dir_ / "rc.txt").empty(); ++k) sleep_ms(5);
+    return std::stoi(slurp(dir_ / "rc.txt"));
+  }
+  bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
+  static void sleep_ms(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
+
+  /// A summary without the records that describe the machine or the build.
+  nlohmann::json numbers(const std::string& name) const {
+    nlohmann::json j = nlohmann::json::parse(slurp(dir_ / name));
+    for (const std::string& key : machine_records()) j.erase(key);
+    return j;
+  }
+};
+
+// Eight replicas of a cooling gas, each about a third of a second on this machine (1.5 s in all on 2 cores).
+const std::string scene = R"([run]
+seed = 5
+replicas = 8
+t_end = 10.0
+dt = 0.01
+samples = 10
+[[species]]
+particles = 200000
+[collision]
+restitution = 0.8
+)";
+
+TEST(CheckpointFile, RoundTripKeepsTheIdentityAndEveryReplica) {
+  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_round_trip";
+  const Checkpoint c = small_checkpoint();
+  write_checkpoint(path.string(), c);
+  const Checkpoint back = read_checkpoint(path.string());
+  EXPECT_EQ(back.build, c.build);
+  EXPECT_EQ(back.scene_text, c.scene_text);
+  EXPECT_EQ(back.seed, 7u);
+  EXPECT_EQ(back.replicas, 3u);
+  ASSERT_EQ(back.finished.size(), 2u);
+  EXPECT_EQ(back.finished.at(0).temperature, c.finished.at(0).temperature);
+  EXPECT_EQ(back.finished.at(2).intruder->velocity, c.finished.at(2).intruder->velocity);
+  EXPECT_EQ(checkpoint_mismatch(back, c.build, c.scene_text, 7, 3), "");
+  EXPECT_NE(checkpoint_mismatch(back, "0.1.0+ffffffffffff", c.scene_text, 7, 3).find("written by granmc"),
+            std::string::npos);
+  EXPECT_NE(checkpoint_mismatch(back, c.build, "[run]\n", 7, 3).find("another scene"), std::string::npos);
+  EXPECT_NE(checkpoint_mismatch(back, c.build, c.scene_text, 8, 3).find("seed 7"), std::string::npos);
+  EXPECT_NE(checkpoint_mismatch(back, c.build, c.scene_text, 7, 4).find("3 replicas"), std::string::npos);
+  fs::remove(path);
+}
+
+TEST(CheckpointFile, BadFilesAreRefusedSayingWhy) {
+  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_bad";
+  write_checkpoint(path.string(), small_checkpoint());
+  const std::string good = slurp(path);
+  auto refusal = [&](const std::string& bytes) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    try {
+      read_checkpoint(path.string());
+    } catch (const CheckpointError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refusal("[run]\nseed = 1\n").find("is not a granmc checkpoint"), std::string::npos);
+  EXPECT_NE(refusal(good.substr(0, 40)).find("corrupt"), std::string::npos);
+  std::string flipped = good;
+  flipped[good.size() / 2] ^= 0x10;
+  EXPECT_NE(refusal(flipped).find("checksum"), std::string::npos);
+  std::string other_version = good;
+  other_version[std::string("granmc checkpoint\n").size()] = 9;  // the format version's low byte
+  EXPECT_NE(refusal(other_version).find("checkpoint format 9"), std::string::npos);
+  fs::remove(path);
+  EXPECT_NE(refusal("").find("is not a granmc checkpoint"), std::string::npos);
+  fs::remove(path);
+}
+
+TEST(CheckpointFile, AFailedWriteLeavesThePreviousCheckpoint) {
+  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_failed_write";
+  write_checkpoint(path.string(), small_checkpoint());
+  const std::string before = slurp(path);
+  // The temporary name is taken by a directory, so the write fails as on a full disk: before the rename.
+  const fs::path blocker = path.string() + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+  fs::create_directory(blocker);
+  Checkpoint other = small_checkpoint();
+  other.seed = 8;
+  try {
+    write_checkpoint(path.string(), other);
+    ADD_FAILURE() << "the write did not fail";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the previous checkpoint, if any, is intact"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(path), before);
+  EXPECT_EQ(read_checkpoint(path.string()).seed, 7u);
+  fs::remove(blocker);
+  fs::remove(path);
+}
+
+TEST_F(Checkpoints, InterruptedRunResumesToTheFilesOfAnUninterruptedOne) {
+  write("s.toml", scene);
+  const Outcome full = granmc("run s.toml --out full.h5 --summary full.json --quiet");
+  ASSERT_EQ(full.status, 0) << full.stderr_text;
+
+  // Stop it with SIGINT once a replica has been checkpointed.
+  const pid_t pid = start("run s.toml --out part.h5 --summary part.json --checkpoint-every 0");
+  for (int k = 0; k < 6000 && !exists("part.h5.checkpoint") && slurp(dir_ / "rc.txt").empty(); ++k) sleep_ms(5);
+  ::kill(pid, SIGINT);
+  const int status = wait_exit();
+  if (status == 0) GTEST_SKIP() << "the run ended before the signal";
+  ASSERT_EQ(status, 3) << slurp(dir_ / "err.txt");
+  EXPECT_NE(slurp(dir_ / "err.txt").find("--resume part.h5.checkpoint"), std::string::npos) << slurp(dir_ / "err.txt");
+  EXPECT_FALSE(exists("part.h5"));
+  EXPECT_FALSE(exists("part.json"));
+  ASSERT_TRUE(exists("part.h5.checkpoint"));
+  const std::size_t kept = read_checkpoint((dir_ / "part.h5.checkpoint").string()).finished.size();
+  EXPECT_GE(kept, 1u);
+  EXPECT_LT(kept, 8u);
+
+  // A plain rerun does not overwrite the checkpoint; a resume with another seed is refused.
+  const Outcome again = granmc("run s.toml --out part.h5 --summary part.json");
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.stderr_text.find("--resume part.h5.checkpoint"), std::string::npos) << again.stderr_text;
+  const Outcome other_seed = granmc("run s.toml --out part.h5 --resume part.h5.checkpoint --seed 6");
+  EXPECT_EQ(other_seed.status, 2);
+  EXPECT_NE(other_seed.stderr_text.find("seed 5"), std::string::npos) << other_seed.stderr_text;
+
+  const Outcome resumed = granmc("run s.toml --out part.h5 --summary part.json --resume part.h5.checkpoint");
+  ASSERT_EQ(resumed.status, 0) << resumed.stderr_text;
+  EXPECT_NE(resumed.stdout_text.find(std::to_string(kept) + " of 8 replicas from part.h5.checkpoint"),
+            std::string::npos)
+      << resumed.stdout_text;
+  EXPECT_FALSE(exists("part.h5.checkpoint"));  // the files replace it
+  EXPECT_EQ(numbers("part.json"), numbers("full.json"));
+}
+
+TEST_F(Checkpoints, KilledAtRandomAndResumedEachTimeGivesTheSameFiles) {
+  // kill -9 at random moments (the checkpoint may be half written: its temporary name), resuming each time,
+  // until a run finishes; then the summary is the uninterrupted run's.
+  write("s.toml", scene);
+  const Outcome full = granmc("run s.toml --out full.h5 --summary full.json --quiet");
+  ASSERT_EQ(full.status, 0) << full.stderr_text;
+  std::mt19937 random(2024);
+  int kills = 0;
+  for (int attempt = 0; attempt < 40; ++attempt) {
+    const std::string resume = exists("part.h5.checkpoint") ? " --resume part.h5.checkpoint" : "";
+    const pid_t pid = start("run s.toml --out part.h5 --summary part.json --quiet --checkpoint-every 0" + resume);
+    sleep_ms(std::uniform_int_distribution<int>(100, 400)(random));
+    ::kill(pid, SIGKILL);
+    const int status = wait_exit();
+    if (status == 0) break;
+    ASSERT_EQ(status, 128 + SIGKILL) << slurp(dir_ / "err.txt");
+    ++kills;
+  }
+  std::printf("[ measured ] %d kills before the run finished\n", kills);
+  EXPECT_GE(kills, 2);  // the run takes several times the longest wait
+  ASSERT_TRUE(exists("part.json"));
+  EXPECT_EQ(numbers("part.json"), numbers("full.json"));
+}
+
+}  // namespace
+}  // namespace granmc
