@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -191,6 +192,74 @@ TEST_F(Checkpoints, InterruptedRunResumesToTheFilesOfAnUninterruptedOne) {
       << resumed.stdout_text;
   EXPECT_FALSE(exists("part.h5.checkpoint"));  // the files replace it
   EXPECT_EQ(numbers("part.json"), numbers("full.json"));
+}
+
+// The other schemes (each about a second on 2 cores): the event scheme under white noise, the same with
+// weighted particles, and the Gillespie intruder. Each interrupted once a replica is kept, then resumed.
+const std::string event_scene = R"([run]
+method = "event"
+seed = 7
+replicas = 8
+t_end = 8.0
+samples = 4
+[[species]]
+particles = 100000
+[collision]
+kernel = "maxwell"
+rate = 1.2732395447351628
+restitution = 0.1
+[thermostat]
+kind = "white-noise"
+beta = 30.0
+[output]
+histogram = { shells = 64, radius = 40.0 }
+)";
+const std::string weighted_scene = event_scene;  // with [weights] and 20 000 particles, below
+const std::string intruder_scene = R"([run]
+method = "gillespie"
+seed = 7
+replicas = 8
+t_end = 2000000.0
+samples = 2000
+[intruder]
+dimension = 1
+mass = 1.0
+restitution = 0.5
+bath = "gaussian"
+bath_a = 1.0
+bath_density = 1.0
+[output]
+histogram = { shells = 100, radius = 5.0 }
+)";
+
+TEST_F(Checkpoints, EverySchemeResumesToTheFilesOfAnUninterruptedRun) {
+  std::string weighted = weighted_scene;
+  weighted.replace(weighted.find("t_end = 8.0"), 11, "t_end = 0.6");
+  weighted.replace(weighted.find("particles = 100000"), 18, "particles = 20000");
+  weighted += "[weights]\nscheme = \"swpm\"\nparticles_per_shell = 128\n";
+  int interrupted = 0;
+  for (const auto& [name, text] :
+       {std::pair{"event", event_scene}, std::pair{"weighted", weighted}, std::pair{"intruder", intruder_scene}}) {
+    SCOPED_TRACE(name);
+    const std::string n = name;
+    write(n + ".toml", text);
+    const Outcome full = granmc("run " + n + ".toml --out " + n + "_full.h5 --summary " + n + "_full.json --quiet");
+    ASSERT_EQ(full.status, 0) << full.stderr_text;
+    const std::string out = " --out " + n + ".h5 --summary " + n + ".json";
+    const pid_t pid = start("run " + n + ".toml" + out + " --checkpoint-every 0");
+    for (int k = 0; k < 6000 && !exists(n + ".h5.checkpoint") && slurp(dir_ / "rc.txt").empty(); ++k) sleep_ms(5);
+    ::kill(pid, SIGINT);
+    const int status = wait_exit();
+    if (status == 3) {
+      ++interrupted;
+      const Outcome resumed = granmc("run " + n + ".toml" + out + " --resume " + n + ".h5.checkpoint --quiet");
+      ASSERT_EQ(resumed.status, 0) << resumed.stderr_text;
+    } else {
+      ASSERT_EQ(status, 0) << slurp(dir_ / "err.txt");  // it ended before the signal
+    }
+    EXPECT_EQ(numbers(n + ".json"), numbers(n + "_full.json"));
+  }
+  EXPECT_GE(interrupted, 2);
 }
 
 TEST_F(Checkpoints, KilledAtRandomAndResumedEachTimeGivesTheSameFiles) {
