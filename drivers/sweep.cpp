@@ -7,6 +7,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <optional>
 #include <set>
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers/cli.hpp"
+#include "drivers/run_checkpoints.hpp"
 #include "drivers/run_job.hpp"
 #include "granmc/version.hpp"
 #include "io/build_id.hpp"
@@ -106,10 +108,42 @@ std::vector<std::string> remove_stale_temporaries(const fs::path& dir, const std
 std::string hdf5_name(const SweepScene& s) { return s.name + ".h5"; }
 std::string summary_name(const SweepScene& s) { return s.name + ".json"; }
 
-/// Runs one scene of the sweep as `granmc run` would, writing its two files into `dir`.
-void run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& args) {
-  run_job(s.scene, make_plan(s.scene), {(dir / hdf5_name(s)).string(), (dir / summary_name(s)).string()}, args.threads,
-          args.quiet, args.threads_per_replica);
+/// Runs one scene of the sweep as `granmc run` would, writing its two files into `dir`. In one process the
+/// scene keeps checkpoints as `granmc run` does (drivers/run_checkpoints.hpp), and an interrupted sweep resumes
+/// inside the interrupted scene: from NAME.h5.checkpoint when it belongs to this scene and build, else afresh
+/// (saying why). Returns false when a signal interrupted the scene (its checkpoint written and named).
+bool run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& args, bool one_process) {
+  const std::string hdf5 = (dir / hdf5_name(s)).string();
+  const JobOutputs outputs{hdf5, (dir / summary_name(s)).string()};
+  if (!one_process) {
+    run_job(s.scene, make_plan(s.scene), outputs, args.threads, args.quiet, args.threads_per_replica);
+    return true;
+  }
+  const std::string earlier = checkpoint_path(hdf5);
+  std::optional<RunCheckpoints> checkpoints;
+  if (fs::exists(earlier)) {
+    try {
+      checkpoints.emplace(s.scene, hdf5, CheckpointSettings{true, 10.0, earlier});
+      if (!args.quiet)
+        std::printf("granmc sweep: %s resumes from %s (%zu of %d replicas)\n", s.name.c_str(), earlier.c_str(),
+                    checkpoints->restored(), s.scene.run.replicas);
+    } catch (const CheckpointError& e) {
+      if (!args.quiet) std::printf("granmc sweep: %s runs afresh: %s\n", s.name.c_str(), e.what());
+      fs::remove(earlier);
+    }
+  }
+  if (!checkpoints) checkpoints.emplace(s.scene, hdf5, CheckpointSettings{});
+  std::fflush(stdout);
+  try {
+    run_job(s.scene, make_plan(s.scene), outputs, args.threads, args.quiet, args.threads_per_replica, &*checkpoints);
+    return true;
+  } catch (const RunInterrupted&) {
+    const std::string& file = checkpoints->write_now();
+    std::cerr << "granmc sweep: interrupted in " << s.name << "; " << checkpoints->finished() << " of "
+              << s.scene.run.replicas << " replicas finished and are kept in " << file
+              << "; run the same sweep again to continue\n";
+    return false;
+  }
 }
 
 /// The index: per scene its status, scene hash and the build that made its files (this one for a scene
@@ -152,7 +186,7 @@ void run_in_groups(const SweepArgs& args, const Sweep& sweep, const fs::path& di
       const std::size_t k = todo[at];
       const SweepScene& s = sweep.scenes[k];
       const auto start = std::chrono::steady_clock::now();
-      run_sweep_scene(s, dir, args);
+      run_sweep_scene(s, dir, args, false);
       finished[k] = 1;
       if (in_group.rank == 0 && !args.quiet) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -196,7 +230,8 @@ int sweep_command(const SweepArgs& args) {
     if (at.rank == 0) {
       fs::create_directories(dir);
       std::set<std::string> files = {index_name};
-      for (const SweepScene& s : sweep.scenes) files.insert({hdf5_name(s), summary_name(s)});
+      for (const SweepScene& s : sweep.scenes)
+        files.insert({hdf5_name(s), summary_name(s), checkpoint_path(hdf5_name(s))});
       for (const std::string& name : remove_stale_temporaries(dir, files))
         if (talk) std::printf("granmc sweep: removed %s, left by an interrupted run\n", (dir / name).c_str());
       const auto records = earlier_records(dir / index_name);
@@ -250,7 +285,7 @@ int sweep_command(const SweepArgs& args) {
       if (done[k]) continue;
       const SweepScene& s = sweep.scenes[k];
       const auto start = std::chrono::steady_clock::now();
-      run_sweep_scene(s, dir, args);
+      if (!run_sweep_scene(s, dir, args, at.size == 1)) return exit_interrupted;
       done[k] = true;
       if (at.rank != 0) continue;
       write_summary((dir / index_name).string(), index_json(args.sweep, sweep, hashes, builds, done));

@@ -1,15 +1,19 @@
 #pragma once
 // Running the granmc executable from a test (tests/test_cli.cpp, test_sweep.cpp, test_mpi.cpp): each test
 // gets its own empty directory, writes its files there, and runs `LAUNCHER granmc ARGS` in it (LAUNCHER
-// empty or e.g. mpirun), getting the exit status, stdout and stderr. GRANMC_EXECUTABLE is the granmc binary
+// empty or e.g. mpirun), getting the exit status, stdout and stderr, or starts granmc in the background (to
+// signal it: tests/test_checkpoint.cpp). GRANMC_EXECUTABLE is the granmc binary
 // (tests/CMakeLists.txt). The directory is removed after a test that passed and kept after one that failed.
+#include <sys/types.h>
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -62,6 +66,25 @@ class GranmcDirectory : public ::testing::Test {
     fs::remove(dir_ / "stderr.txt");
     return o;
   }
+
+  /// Starts `granmc args` in the test directory in the background (stdout to out.txt, stderr to err.txt);
+  /// returns its process id. Its exit status goes to rc.txt (wait_exit).
+  pid_t start(const std::string& args) const {
+    fs::remove(dir_ / "pid.txt");
+    fs::remove(dir_ / "rc.txt");
+    const std::string cmd = "cd '" + dir_.string() + "' && sh -c '\"" GRANMC_EXECUTABLE "\" " + args +
+                            " >out.txt 2>err.txt & echo $! > pid.txt; wait $!; echo $? > rc.txt' &";
+    EXPECT_EQ(std::system(cmd.c_str()), 0);
+    for (int k = 0; k < 1000 && slurp(dir_ / "pid.txt").empty(); ++k) sleep_ms(5);
+    return static_cast<pid_t>(std::stol(slurp(dir_ / "pid.txt")));
+  }
+  /// Waits for the process started last to exit; its exit status (128 + signal when a signal ended it).
+  int wait_exit() const {
+    for (int k = 0; k < 60000 && slurp(dir_ / "rc.txt").empty(); ++k) sleep_ms(5);
+    return std::stoi(slurp(dir_ / "rc.txt"));
+  }
+  bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
+  static void sleep_ms(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
 
   fs::path dir_;
 

@@ -50,24 +50,6 @@ class Checkpoints : public granmc_test::GranmcDirectory {
  protected:
   Checkpoints() : GranmcDirectory("granmc_checkpoint_") {}
 
-  /// Starts `granmc args` in the background; returns its process id (its exit status goes to rc.txt).
-  pid_t start(const std::string& args) const {
-    fs::remove(dir_ / "pid.txt");
-    fs::remove(dir_ / "rc.txt");
-    const std::string cmd = "cd '" + dir_.string() + "' && sh -c '\"" GRANMC_EXECUTABLE "\" " + args +
-                            " >out.txt 2>err.txt & echo $! > pid.txt; wait $!; echo $? > rc.txt' &";
-    EXPECT_EQ(std::system(cmd.c_str()), 0);
-    for (int k = 0; k < 1000 && slurp(dir_ / "pid.txt").empty(); ++k) sleep_ms(5);
-    return static_cast<pid_t>(std::stol(slurp(dir_ / "pid.txt")));
-  }
-  /// Waits for the process started last to exit; its exit status (128 + signal when a signal ended it).
-  int wait_exit() const {
-    for (int k = 0; k < 60000 && slurp(dir_ / "rc.txt").empty(); ++k) sleep_ms(5);
-    return std::stoi(slurp(dir_ / "rc.txt"));
-  }
-  bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
-  static void sleep_ms(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
-
   /// A summary without the records that describe the machine or the build.
   nlohmann::json numbers(const std::string& name) const {
     nlohmann::json j = nlohmann::json::parse(slurp(dir_ / name));
