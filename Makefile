@@ -256,7 +256,9 @@ clean:
 	rm -rf $(BUILD) $(MPI_BUILD) $(PORTABLE_BUILD) $(SANITIZE_BUILD)
 
 # Issue 7's stability study: the fast hard cases (ctest -L stability), then the long versions at full size
-# (drivers/scenes/stability/, checks and table in results/stability/table.md; about 4 min).
+# (drivers/scenes/stability/, checks and table in results/stability/table.md; about 4 min), then checkpoints under
+# SIGKILL and a full disk (tests/fault_injection.py, about 40 s).
 stability: build
 	cd $(BUILD) && ctest -L stability --output-on-failure
 	$(PYTHON) drivers/stability.py --granmc $(GRANMC)
+	$(PYTHON) tests/fault_injection.py --granmc $(GRANMC)

@@ -3,6 +3,8 @@
 #include <atomic>
 #include <csignal>
 #include <filesystem>
+#include <iostream>
+#include <stdexcept>
 #include <utility>
 
 #include "io/build_id.hpp"
@@ -66,7 +68,13 @@ void RunCheckpoints::attach(RunOptions& options) {
     checkpoint_.finished.emplace(r, series);
     const double minutes =
         std::chrono::duration<double, std::ratio<60>>(std::chrono::steady_clock::now() - last_write_).count();
-    if (minutes >= settings_.every_minutes && !stop_requested.load()) write_locked();
+    if (minutes < settings_.every_minutes || stop_requested.load()) return;
+    try {
+      write_locked();
+    } catch (const std::runtime_error& e) {  // e.g. a full disk: the run goes on, the previous checkpoint stays
+      std::cerr << "granmc: " << e.what() << "; the run goes on\n";
+      last_write_ = std::chrono::steady_clock::now();  // the next attempt after another interval
+    }
   };
   options.interrupted = [] { return stop_requested.load(); };
   options.on_sample = [tick = std::move(options.on_sample)] {

@@ -4,7 +4,8 @@
 // replica that finishes) and when SIGINT or SIGTERM arrives; then the run ends (exit status 3) and says how to
 // resume. `--resume FILE` runs only the replicas the checkpoint lacks and writes the files an uninterrupted
 // run writes, bit for bit. A replica in flight at the signal stops at its next observation and its work is
-// lost: checkpoints are whole replicas.
+// lost: checkpoints are whole replicas. A checkpoint that cannot be written (a full disk) leaves the previous
+// one as it was; the run says so on stderr and goes on.
 //
 // One process only: under MPI (several ranks, or one replica spread over them) a run has no checkpoints,
 // and `--resume` is refused.
