@@ -40,8 +40,8 @@ struct RunArgs {
   bool quiet = false;
   bool explain = false;
   std::string spread = "replicas";
-  std::string resume;              // a checkpoint to continue from (drivers/run_checkpoints.hpp)
-  double checkpoint_every = 10.0;  // minutes; 0: after every replica
+  std::string resume;                      // a checkpoint to continue from (drivers/run_checkpoints.hpp)
+  std::optional<double> checkpoint_every;  // minutes (0: after every replica); unset: the scene's run.checkpoint_every
   bool no_checkpoints = false;
 };
 
@@ -150,7 +150,8 @@ int run_command(const RunArgs& args) {
   // Checkpoints in one process only (drivers/run_checkpoints.hpp). An earlier run's checkpoint beside the output
   // is never overwritten unasked: it is resumed (--resume) or deleted by the user.
   const bool one_process = at.size == 1 && loaded->plan.spread != Spread::particles;
-  const CheckpointSettings settings{one_process && !args.no_checkpoints, args.checkpoint_every, args.resume};
+  const CheckpointSettings settings{one_process && !args.no_checkpoints,
+                                    args.checkpoint_every.value_or(scene.run.checkpoint_every), args.resume};
   std::optional<RunCheckpoints> checkpoints;
   if (!all_ranks_ok(args.resume.empty() || one_process,
                     "granmc: --resume: a checkpoint is resumed in one process, not under MPI\n"))
@@ -289,7 +290,8 @@ int cli_main(int argc, char** argv) {
   run_cmd
       ->add_option("--checkpoint-every", run.checkpoint_every,
                    "Minutes between checkpoints of the finished replicas (OUT.checkpoint; 0: after each replica; "
-                   "default 10); one is also written on SIGINT or SIGTERM, and the run stops with status 3")
+                   "default: the scene's run.checkpoint_every, 10); one is also written on SIGINT or SIGTERM, and "
+                   "the run stops with status 3")
       ->check(CLI::NonNegativeNumber);
   run_cmd->add_flag("--no-checkpoints", run.no_checkpoints,
                     "No checkpoints, and SIGINT or SIGTERM end the run at once with nothing kept");

@@ -123,7 +123,7 @@ bool run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& 
   std::optional<RunCheckpoints> checkpoints;
   if (fs::exists(earlier)) {
     try {
-      checkpoints.emplace(s.scene, hdf5, CheckpointSettings{true, 10.0, earlier});
+      checkpoints.emplace(s.scene, hdf5, CheckpointSettings{true, s.scene.run.checkpoint_every, earlier});
       if (!args.quiet)
         std::printf("granmc sweep: %s resumes from %s (%zu of %d replicas)\n", s.name.c_str(), earlier.c_str(),
                     checkpoints->restored(), s.scene.run.replicas);
@@ -132,7 +132,7 @@ bool run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& 
       fs::remove(earlier);
     }
   }
-  if (!checkpoints) checkpoints.emplace(s.scene, hdf5, CheckpointSettings{});
+  if (!checkpoints) checkpoints.emplace(s.scene, hdf5, CheckpointSettings{true, s.scene.run.checkpoint_every, ""});
   std::fflush(stdout);
   try {
     run_job(s.scene, make_plan(s.scene), outputs, args.threads, args.quiet, args.threads_per_replica, &*checkpoints);

@@ -38,7 +38,9 @@ struct KnownTable {
 
 const std::vector<KnownTable>& known_tables() {
   static const std::vector<KnownTable> tables = {
-      {"[run]", {"method", "seed", "replicas", "t_end", "dt", "samples", "dt_scaling", "sample_spacing", "storage"}},
+      {"[run]",
+       {"method", "seed", "replicas", "t_end", "dt", "samples", "dt_scaling", "sample_spacing", "storage",
+        "checkpoint_every"}},
       {"[[species]]", {"name", "mass", "diameter", "density", "particles"}},
       {"[collision]", {"kernel", "lambda", "rate", "restitution", "packing_fraction"}},
       {"[thermostat]", {"kind", "zeta", "beta"}},
@@ -488,6 +490,8 @@ void Reader::read_run(const Section& s, RunConfig& run) const {
 
   const auto dt = number(s, "dt", "a finite number >= 0");
   if (dt) run.dt = non_negative(s.key("dt"), *dt);
+  if (const auto every = number(s, "checkpoint_every", "a finite number >= 0 (minutes)"))
+    run.checkpoint_every = non_negative(s.key("checkpoint_every"), *every);
   if (run.method == Method::dsmc) {
     if (!dt) {
       fail(s.key("dt"), "missing required key for method \"dsmc\"; set a time step 0 < dt <= t_end in [run]");

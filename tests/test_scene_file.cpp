@@ -74,6 +74,7 @@ samples = 50
 dt_scaling = "thermal"
 sample_spacing = "log"
 storage = "float"
+checkpoint_every = 0.5
 
 [[species]]
 name = "big"
@@ -123,6 +124,7 @@ histogram = { shells = 64, radius = 8.5, speed = "velocity" }
   EXPECT_EQ(s.run.dt_scaling, DtScaling::thermal);
   EXPECT_EQ(s.run.sample_spacing, SampleSpacing::log);
   EXPECT_EQ(s.run.storage, Storage::single_precision);
+  EXPECT_EQ(s.run.checkpoint_every, 0.5);
   ASSERT_EQ(s.species.size(), 2u);
   EXPECT_EQ(s.species[0].name, "big");
   EXPECT_EQ(s.species[0].mass, 2.5);
@@ -167,6 +169,7 @@ TEST(SceneFile, DefaultsAreApplied) {
   EXPECT_EQ(s.run.dt_scaling, DtScaling::fixed);
   EXPECT_EQ(s.run.sample_spacing, SampleSpacing::linear);
   EXPECT_EQ(s.run.storage, Storage::double_precision);
+  EXPECT_EQ(s.run.checkpoint_every, 10.0);
   ASSERT_EQ(s.species.size(), 1u);
   EXPECT_EQ(s.species[0].name, "a");
   EXPECT_EQ(s.species[0].mass, 1.0);
@@ -323,7 +326,7 @@ TEST(SceneFile, LoadSceneReadsAFile) {
 TEST(SceneFile, UnknownKeyInRun) {
   expect_rejected("[run]\nt_end = 1.0\ndt = 0.01\nfrobnicate = 3\n" + kSpecies, "run.frobnicate",
                   "unknown key; allowed keys in [run]: method, seed, replicas, t_end, dt, samples, dt_scaling, "
-                  "sample_spacing, storage");
+                  "sample_spacing, storage, checkpoint_every");
   expect_rejected("[run]\nt_end = 1.0\ndt = 0.01\ntend = 3\n" + kSpecies, "run.tend", "did you mean t_end?");
   expect_rejected("[run]\nt_end = 1.0\ndt = 0.01\nkernel = \"vhs\"\n" + kSpecies, "run.kernel",
                   "it belongs in [collision]");
@@ -525,6 +528,7 @@ TEST(SceneFile, UnknownChoiceStrings) {
                   "allowed: \"linear\" | \"log\"");
   expect_rejected("[run]\nt_end = 1\ndt = 0.1\nstorage = \"half\"\n" + kSpecies, "run.storage",
                   "allowed: \"double\" | \"float\"");
+  expect_rejected("[run]\nt_end = 1\ndt = 0.1\ncheckpoint_every = -1\n" + kSpecies, "run.checkpoint_every", ">= 0");
   expect_rejected(kGas + "[thermostat]\nkind = \"gaussian\"\nzeta = \"auto\"\n", "thermostat.zeta",
                   "expected a finite number or \"cooling-rate\"");
 }

@@ -46,6 +46,7 @@ struct RunConfig {
   DtScaling dt_scaling = DtScaling::fixed;
   SampleSpacing sample_spacing = SampleSpacing::linear;
   Storage storage = Storage::double_precision;
+  double checkpoint_every = 10.0;  // >= 0, minutes between checkpoints of `granmc run` (0: after each replica)
 };
 
 struct SpeciesConfig {
