@@ -41,7 +41,7 @@ struct RunArgs {
   bool explain = false;
   std::string spread = "replicas";
   std::string resume;                      // a checkpoint to continue from (drivers/run_checkpoints.hpp)
-  std::optional<double> checkpoint_every;  // minutes (0: after every replica); unset: the scene's run.checkpoint_every
+  std::optional<double> checkpoint_every;  // minutes (0: at every sample); unset: the scene's run.checkpoint_every
   bool no_checkpoints = false;
 };
 
@@ -169,9 +169,9 @@ int run_command(const RunArgs& args) {
       std::cerr << "granmc: " << e.what() << "\n";
       return exit_bad_input;
     }
-    if (checkpoints->restored() > 0 && !args.quiet)
-      std::printf("granmc: %zu of %d replicas from %s\n", checkpoints->restored(), scene.run.replicas,
-                  args.resume.c_str());
+    if (checkpoints->restored() + checkpoints->restored_in_flight() > 0 && !args.quiet)
+      std::printf("granmc: %zu of %d replicas from %s, %zu more going on from where they stopped\n",
+                  checkpoints->restored(), scene.run.replicas, args.resume.c_str(), checkpoints->restored_in_flight());
   }
   try {
     const JobResult done = run_job(scene, loaded->plan, {out, args.summary}, args.threads, args.quiet,
@@ -289,7 +289,8 @@ int cli_main(int argc, char** argv) {
                       "lacks run, and the files are those of an uninterrupted run (docs/scenes.md, \"Checkpoints\")");
   run_cmd
       ->add_option("--checkpoint-every", run.checkpoint_every,
-                   "Minutes between checkpoints of the finished replicas (OUT.checkpoint; 0: after each replica; "
+                   "Minutes between checkpoints (OUT.checkpoint: the finished replicas, and the time-stepped ones in "
+                   "flight; 0: at every sample; "
                    "default: the scene's run.checkpoint_every, 10); one is also written on SIGINT or SIGTERM, and "
                    "the run stops with status 3")
       ->check(CLI::NonNegativeNumber);

@@ -27,7 +27,10 @@ extern "C" void on_stop_signal(int signal) {
 std::string checkpoint_path(const std::string& hdf5) { return hdf5 + ".checkpoint"; }
 
 RunCheckpoints::RunCheckpoints(const Scene& scene, const std::string& hdf5, const CheckpointSettings& settings)
-    : settings_(settings), path_(checkpoint_path(hdf5)), last_write_(std::chrono::steady_clock::now()) {
+    : settings_(settings),
+      path_(checkpoint_path(hdf5)),
+      started_(std::chrono::steady_clock::now()),
+      last_write_(started_) {
   checkpoint_.build = build_id();
   checkpoint_.scene_text = scene.source_text;
   checkpoint_.seed = scene.run.seed;
@@ -38,7 +41,9 @@ RunCheckpoints::RunCheckpoints(const Scene& scene, const std::string& hdf5, cons
         checkpoint_mismatch(earlier, checkpoint_.build, checkpoint_.scene_text, checkpoint_.seed, checkpoint_.replicas);
     if (!why.empty()) throw CheckpointError("cannot resume from '" + settings_.resume + "': " + why);
     checkpoint_.finished = std::move(earlier.finished);
+    checkpoint_.in_flight = std::move(earlier.in_flight);
     restored_ = checkpoint_.finished.size();
+    restored_in_flight_ = checkpoint_.in_flight.size();
   }
   if (settings_.enabled) {
     stop_requested.store(false);
@@ -62,19 +67,29 @@ void RunCheckpoints::attach(RunOptions& options) {
     const auto at = checkpoint_.finished.find(r);
     return at == checkpoint_.finished.end() ? nullptr : &at->second;
   };
+  options.restored_in_flight = [this](std::uint64_t r) -> const ReplicaInFlight* {
+    const std::lock_guard lock(mutex_);
+    const auto at = checkpoint_.in_flight.find(r);
+    return at == checkpoint_.in_flight.end() ? nullptr : &at->second;
+  };
   if (!settings_.enabled) return;
   options.on_replica = [this](std::uint64_t r, const ReplicaSeries& series) {
     const std::lock_guard lock(mutex_);
     checkpoint_.finished.emplace(r, series);
-    const double minutes =
-        std::chrono::duration<double, std::ratio<60>>(std::chrono::steady_clock::now() - last_write_).count();
-    if (minutes < settings_.every_minutes || stop_requested.load()) return;
-    try {
-      write_locked();
-    } catch (const std::runtime_error& e) {  // e.g. a full disk: the run goes on, the previous checkpoint stays
-      std::cerr << "granmc: " << e.what() << "; the run goes on\n";
-      last_write_ = std::chrono::steady_clock::now();  // the next attempt after another interval
-    }
+    checkpoint_.in_flight.erase(r);
+    write_if_due_locked();
+  };
+  options.in_flight_wanted = [this](std::uint64_t r) {
+    if (stop_requested.load() || settings_.every_minutes == 0.0) return true;
+    const std::lock_guard lock(mutex_);
+    const auto at = last_in_flight_.find(r);
+    return minutes_since(at == last_in_flight_.end() ? started_ : at->second) >= settings_.every_minutes;
+  };
+  options.on_in_flight = [this](std::uint64_t r, ReplicaInFlight&& state) {
+    const std::lock_guard lock(mutex_);
+    checkpoint_.in_flight.insert_or_assign(r, std::move(state));
+    last_in_flight_[r] = std::chrono::steady_clock::now();
+    write_if_due_locked();
   };
   options.interrupted = [] { return stop_requested.load(); };
   options.on_sample = [tick = std::move(options.on_sample)] {
@@ -92,6 +107,20 @@ const std::string& RunCheckpoints::write_now() {
 void RunCheckpoints::write_locked() {
   write_checkpoint(path_, checkpoint_);
   last_write_ = std::chrono::steady_clock::now();
+}
+
+void RunCheckpoints::write_if_due_locked() {
+  if (minutes_since(last_write_) < settings_.every_minutes || stop_requested.load()) return;
+  try {
+    write_locked();
+  } catch (const std::runtime_error& e) {  // e.g. a full disk: the run goes on, the previous checkpoint stays
+    std::cerr << "granmc: " << e.what() << "; the run goes on\n";
+    last_write_ = std::chrono::steady_clock::now();  // the next attempt after another interval
+  }
+}
+
+double RunCheckpoints::minutes_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::ratio<60>>(std::chrono::steady_clock::now() - t).count();
 }
 
 void RunCheckpoints::run_completed() {

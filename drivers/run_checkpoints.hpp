@@ -1,16 +1,18 @@
 #pragma once
-// Checkpoints of `granmc run` (docs/scenes.md, "Checkpoints"; io/checkpoint.hpp): the finished replicas are
-// written to OUT.checkpoint beside the HDF5 output every `every_minutes` of wall-clock time (0: after each
-// replica that finishes) and when SIGINT or SIGTERM arrives; then the run ends (exit status 3) and says how to
-// resume. `--resume FILE` runs only the replicas the checkpoint lacks and writes the files an uninterrupted
-// run writes, bit for bit. A replica in flight at the signal stops at its next observation and its work is
-// lost: checkpoints are whole replicas. A checkpoint that cannot be written (a full disk) leaves the previous
-// one as it was; the run says so on stderr and goes on.
+// Checkpoints of `granmc run` (docs/scenes.md, "Checkpoints"; io/checkpoint.hpp): the finished replicas, and
+// the time-stepped scheme's replicas in flight at a sample time, are written to OUT.checkpoint beside the HDF5
+// output every `every_minutes` of wall-clock time (0: at every sample and every finished replica) and when
+// SIGINT or SIGTERM arrives; then the run ends (exit status 3) and says how to resume. `--resume FILE` goes on
+// with the replicas in flight, runs those the checkpoint lacks, and writes the files an uninterrupted run
+// writes, bit for bit. At the signal a replica in flight stops at its next sample time; the other schemes'
+// replicas lose their work there (they are kept whole only). A checkpoint that cannot be written (a full
+// disk) leaves the previous one as it was; the run says so on stderr and goes on.
 //
 // One process only: under MPI (several ranks, or one replica spread over them) a run has no checkpoints,
 // and `--resume` is refused.
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -25,7 +27,7 @@ inline constexpr int exit_interrupted = 3;
 
 struct CheckpointSettings {
   bool enabled = true;
-  double every_minutes = 10.0;  // 0: after every replica that finishes
+  double every_minutes = 10.0;  // 0: at every sample and every finished replica
   std::string resume;           // a checkpoint to continue from, or empty
 };
 
@@ -50,16 +52,21 @@ class RunCheckpoints {
 
   [[nodiscard]] std::size_t finished() const;
   [[nodiscard]] std::size_t restored() const noexcept { return restored_; }
+  /// Replicas the resumed checkpoint had in flight (the time-stepped scheme goes on with them mid-run).
+  [[nodiscard]] std::size_t restored_in_flight() const noexcept { return restored_in_flight_; }
 
  private:
   void write_locked();
+  void write_if_due_locked();  // when every_minutes have passed since the last write
+  static double minutes_since(std::chrono::steady_clock::time_point t);
 
   CheckpointSettings settings_;
   std::string path_;
   mutable std::mutex mutex_;
   Checkpoint checkpoint_;
-  std::size_t restored_ = 0;
-  std::chrono::steady_clock::time_point last_write_;
+  std::size_t restored_ = 0, restored_in_flight_ = 0;
+  std::chrono::steady_clock::time_point started_, last_write_;
+  std::map<std::uint64_t, std::chrono::steady_clock::time_point> last_in_flight_;  // per replica in flight
 };
 
 }  // namespace granmc

@@ -125,8 +125,8 @@ bool run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& 
     try {
       checkpoints.emplace(s.scene, hdf5, CheckpointSettings{true, s.scene.run.checkpoint_every, earlier});
       if (!args.quiet)
-        std::printf("granmc sweep: %s resumes from %s (%zu of %d replicas)\n", s.name.c_str(), earlier.c_str(),
-                    checkpoints->restored(), s.scene.run.replicas);
+        std::printf("granmc sweep: %s resumes from %s (%zu of %d replicas, %zu more in flight)\n", s.name.c_str(),
+                    earlier.c_str(), checkpoints->restored(), s.scene.run.replicas, checkpoints->restored_in_flight());
     } catch (const CheckpointError& e) {
       if (!args.quiet) std::printf("granmc sweep: %s runs afresh: %s\n", s.name.c_str(), e.what());
       fs::remove(earlier);

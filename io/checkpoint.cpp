@@ -47,6 +47,11 @@ void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
     out.value(replica);
     write_replica(out, series);
   }
+  out.value(static_cast<std::uint64_t>(checkpoint.in_flight.size()));
+  for (const auto& [replica, state] : checkpoint.in_flight) {
+    out.value(replica);
+    write_in_flight(out, state);
+  }
   out.value(fnv1a(out.bytes()));
   const std::vector<std::byte>& bytes = out.bytes();
   try {
@@ -86,6 +91,13 @@ Checkpoint read_checkpoint(const std::string& path) {
       const auto replica = in.value<std::uint64_t>();
       if (replica >= c.replicas || c.finished.contains(replica)) throw bad("is corrupt (a replica index)");
       c.finished.emplace(replica, read_replica(in));
+    }
+    const auto in_flight = in.value<std::uint64_t>();
+    for (std::uint64_t k = 0; k < in_flight; ++k) {
+      const auto replica = in.value<std::uint64_t>();
+      if (replica >= c.replicas || c.finished.contains(replica) || c.in_flight.contains(replica))
+        throw bad("is corrupt (a replica index)");
+      c.in_flight.emplace(replica, read_in_flight(in));
     }
     if (!in.at_end()) throw bad("is corrupt (bytes after the last replica)");
     return c;

@@ -1,12 +1,14 @@
 #pragma once
 // A checkpoint of a run (`granmc run --checkpoint-every`, `--resume`; docs/scenes.md, "Checkpoints"): the
-// series of the replicas that have finished, with what identifies the run they belong to (the build, the
-// scene text, the seed, the number of replicas). Each replica depends only on (seed, replica)
-// (kernel/core/philox_stream.hpp), so a run resumed from it runs the other replicas and writes the files an
-// uninterrupted run writes, bit for bit.
+// series of the replicas that have finished and the state of those stopped at a sample time (the
+// time-stepped scheme's, kernel/schemes/replica_in_flight.hpp), with what identifies the run they belong to
+// (the build, the scene text, the seed, the number of replicas). Each replica depends only on (seed, replica)
+// (kernel/core/philox_stream.hpp), so a run resumed from it goes on with the replicas in flight, runs the
+// others and writes the files an uninterrupted run writes, bit for bit.
 //
 // File: a magic line, the format version, a byte-order mark, the identity, then each finished replica as
-// its index and io/replica_bytes.hpp's bytes, and last a 64-bit FNV-1a checksum of everything before it.
+// its index and io/replica_bytes.hpp's bytes, then each replica in flight the same way, and last a 64-bit
+// FNV-1a checksum of everything before it.
 // Native byte order and the replica bytes of one build: a checkpoint is read by the build that wrote it.
 #include <cstdint>
 #include <map>
@@ -14,17 +16,19 @@
 #include <string>
 
 #include "kernel/observe/gas_series.hpp"
+#include "kernel/schemes/replica_in_flight.hpp"
 
 namespace granmc {
 
-inline constexpr std::uint32_t checkpoint_format_version = 1;
+inline constexpr std::uint32_t checkpoint_format_version = 2;
 
 struct Checkpoint {
   std::string build;       // io/build_id.hpp of the build that wrote it
   std::string scene_text;  // Scene::source_text of the run
   std::uint64_t seed = 0;  // the run's seed (run.seed or --seed)
   std::uint64_t replicas = 0;
-  std::map<std::uint64_t, ReplicaSeries> finished;  // replica index -> its series
+  std::map<std::uint64_t, ReplicaSeries> finished;     // replica index -> its series
+  std::map<std::uint64_t, ReplicaInFlight> in_flight;  // replica index -> its state at a sample time
 };
 
 /// A file that is not a checkpoint this build can resume from; what() says why.

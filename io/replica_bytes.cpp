@@ -9,6 +9,7 @@ namespace {
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_trivially_copyable_v<Vec3>);
 static_assert(sizeof(SymTensor) == 6 * sizeof(double) && std::is_trivially_copyable_v<SymTensor>);
+static_assert(std::is_trivially_copyable_v<CollisionTally>);
 // The fields of a replica in message order are kernel/observe/gas_series.hpp's one list (visit_replica_fields),
 // walked by Put (writes each field) and Get (reads into it), so writing and reading cannot disagree. Optionals
 // go as a flag byte and, for a record, its fields when present; the energy residual always sends its value (0
@@ -26,6 +27,10 @@ struct Put {
   void operator()(const char*, const std::vector<SpeciesSeries>& species) {
     out.value(static_cast<std::uint64_t>(species.size()));
     for (const SpeciesSeries& sp : species) visit_species_fields(sp, *this);
+  }
+  void operator()(const char*, const std::vector<std::vector<double>>& arrays) {
+    out.value(static_cast<std::uint64_t>(arrays.size()));
+    for (const std::vector<double>& a : arrays) out.array(a);
   }
   void operator()(const char*, const std::optional<double>& v) {
     out.value(static_cast<std::uint8_t>(v.has_value()));
@@ -58,6 +63,10 @@ struct Get {
   void operator()(const char*, std::vector<SpeciesSeries>& species) {
     const auto n = in.value<std::uint64_t>();  // one at a time: a corrupt count fails at the end of the bytes
     for (std::uint64_t i = 0; i < n; ++i) visit_species_fields(species.emplace_back(), *this);
+  }
+  void operator()(const char*, std::vector<std::vector<double>>& arrays) {
+    const auto n = in.value<std::uint64_t>();
+    for (std::uint64_t i = 0; i < n; ++i) arrays.push_back(in.array<double>());
   }
   void operator()(const char* name, std::optional<double>& v) {
     const bool present = flag(name);
@@ -98,6 +107,24 @@ ReplicaSeries read_replica(ByteReader& in) {
   Get get{in};
   visit_replica_fields(s, get);
   return s;
+}
+
+void write_in_flight(ByteWriter& out, const ReplicaInFlight& f) {
+  write_replica(out, f.series);
+  out.value(f.samples_taken);
+  out.array(f.initial_majorant);
+  Put put{out};
+  visit_snapshot_fields(f.dsmc, put);
+}
+
+ReplicaInFlight read_in_flight(ByteReader& in) {
+  ReplicaInFlight f;
+  f.series = read_replica(in);
+  f.samples_taken = in.value<std::uint64_t>();
+  f.initial_majorant = in.array<double>();
+  Get get{in};
+  visit_snapshot_fields(f.dsmc, get);
+  return f;
 }
 
 std::vector<std::byte> serialise_replicas(const std::vector<ReplicaSeries>& replicas, int offset, int stride) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "kernel/observe/gas_series.hpp"
+#include "kernel/schemes/replica_in_flight.hpp"
 
 namespace granmc {
 
@@ -80,6 +81,10 @@ class ByteReader {
 /// Every field of a replica's series, the optional IntruderSeries included.
 void write_replica(ByteWriter& out, const ReplicaSeries& series);
 ReplicaSeries read_replica(ByteReader& in);
+
+/// A replica stopped at a sample (kernel/schemes/replica_in_flight.hpp): its series, then its state.
+void write_in_flight(ByteWriter& out, const ReplicaInFlight& replica);
+ReplicaInFlight read_in_flight(ByteReader& in);
 
 /// The replicas r = offset, offset + stride, ... of `replicas`, as bytes (count first).
 std::vector<std::byte> serialise_replicas(const std::vector<ReplicaSeries>& replicas, int offset, int stride);

@@ -5,8 +5,9 @@
 
 For each of four scenes (the time-stepped scheme, the event scheme under white noise, weighted particles,
 the Gillespie intruder; a few seconds each on 2 cores), runs it once uninterrupted, then again with
---checkpoint-every 0, killing it with SIGKILL after a random 0.1-1.5 s and resuming it each time (--resume,
-alternating 2 threads and 1), until a run completes; then compares the two HDF5 files object by object
+--checkpoint-every 0 (a checkpoint at every sample: the time-stepped replicas are kept mid-run, the others
+whole), killing it with SIGKILL after a random 0.1-1.5 s and resuming it each time (--resume, alternating 2
+threads and 1), until a run completes (the last of --kills attempts runs to the end); then compares the two HDF5 files object by object
 (tests/same_bits.py: every dataset and attribute but those of the machine and the build) and the two
 summaries.
 
@@ -33,12 +34,12 @@ from same_bits import MACHINE_ATTRIBUTES, differences
 SCENES = {
     "dsmc": """[run]
 seed = 5
-replicas = 8
-t_end = 40.0
+replicas = 4
+t_end = 100.0
 dt = 0.01
 samples = 10
 [[species]]
-particles = 500000
+particles = 200000
 [collision]
 restitution = 0.8
 """,

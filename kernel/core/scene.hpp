@@ -46,7 +46,7 @@ struct RunConfig {
   DtScaling dt_scaling = DtScaling::fixed;
   SampleSpacing sample_spacing = SampleSpacing::linear;
   Storage storage = Storage::double_precision;
-  double checkpoint_every = 10.0;  // >= 0, minutes between checkpoints of `granmc run` (0: after each replica)
+  double checkpoint_every = 10.0;  // >= 0, minutes between checkpoints of `granmc run` (0: at every sample)
 };
 
 struct SpeciesConfig {

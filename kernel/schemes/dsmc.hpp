@@ -40,6 +40,7 @@
 #include "kernel/schemes/batched_backend.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/gas_state.hpp"
+#include "kernel/schemes/replica_in_flight.hpp"
 
 namespace granmc {
 
@@ -132,6 +133,44 @@ class BasicDsmc {
       state_.time = state_.time + dt >= t ? t : state_.time + dt;
     }
     run_around_collisions(owed_);
+    owed_ = 0.0;
+  }
+
+  /// The state at a sample time (after advance_to), for a checkpoint (schemes/replica_in_flight.hpp).
+  [[nodiscard]] DsmcSnapshot snapshot() const {
+    DsmcSnapshot s;
+    for (const BasicSpeciesStore<Real>& store : state_.species) {
+      std::vector<double>& v = s.velocities.emplace_back();
+      v.reserve(3 * store.size());
+      for (std::size_t k = 0; k < store.size(); ++k) {
+        const Vec3 c = store.velocity(k);
+        v.insert(v.end(), {c.x, c.y, c.z});
+      }
+    }
+    s.log_u = state_.scale.log_u, s.time = state_.time, s.step = state_.step;
+    s.omega_max = omega_max_, s.carried = carried_, s.total = total_, s.pair_totals = pair_totals_;
+    s.twice_energy = twice_energy_, s.reference_twice_energy = reference_twice_energy_;
+    s.log_temperature0 = log_temperature0_, s.momentum_removed = momentum_removed_, s.rescales = rescales_;
+    s.transfer_integral = transfer_integral_, s.transfer_since = transfer_since_;
+    return s;
+  }
+
+  /// Puts the replica back in the state `s` of a replica of the same scene (a stored velocity read back from
+  /// its double is the same Real).
+  void restore(const DsmcSnapshot& s) {
+    if (s.velocities.size() != state_.species.size() || s.omega_max.size() != omega_max_.size())
+      throw std::runtime_error("a snapshot of another scene");
+    for (std::size_t i = 0; i < state_.species.size(); ++i) {
+      BasicSpeciesStore<Real>& store = state_.species[i];
+      const std::vector<double>& v = s.velocities[i];
+      if (v.size() != 3 * store.size()) throw std::runtime_error("a snapshot of another scene");
+      for (std::size_t k = 0; k < store.size(); ++k) store.set_velocity(k, {v[3 * k], v[3 * k + 1], v[3 * k + 2]});
+    }
+    state_.scale.log_u = s.log_u, state_.time = s.time, state_.step = s.step;
+    omega_max_ = s.omega_max, carried_ = s.carried, total_ = s.total, pair_totals_ = s.pair_totals;
+    twice_energy_ = s.twice_energy, reference_twice_energy_ = s.reference_twice_energy;
+    log_temperature0_ = s.log_temperature0, momentum_removed_ = s.momentum_removed, rescales_ = s.rescales;
+    transfer_integral_ = s.transfer_integral, transfer_since_ = s.transfer_since;
     owed_ = 0.0;
   }
 

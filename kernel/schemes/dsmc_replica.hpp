@@ -10,18 +10,29 @@
 #include "kernel/observe/gas_observation.hpp"
 #include "kernel/observe/pressure_tensor.hpp"
 #include "kernel/schemes/dsmc.hpp"
+#include "kernel/schemes/replica_in_flight.hpp"
+#include "kernel/schemes/run_options.hpp"
 
 namespace granmc {
 
-/// Runs `sim` (a BasicDsmc just made) to each sample time in turn and records the replica's series;
-/// `on_sample` is called after each observation.
+/// Runs `sim` (a BasicDsmc just made for replica `replica`) to each sample time in turn and records the
+/// replica's series; options.on_sample is called after each observation. From a state options.restored_in_flight
+/// gives, it goes on from there; when options.in_flight_wanted asks, it hands its state to options.on_in_flight
+/// (RunOptions, schemes/replica_in_flight.hpp).
 template <class Sim>
-ReplicaSeries run_dsmc_replica(Sim& sim, const Scene& scene, const std::vector<double>& times,
-                               const std::function<void()>& on_sample) {
-  const std::vector<double> initial_majorant = sim.omega_max();
+ReplicaSeries run_dsmc_replica(Sim& sim, const Scene& scene, const std::vector<double>& times, std::uint64_t replica,
+                               const RunOptions& options) {
+  std::vector<double> initial_majorant = sim.omega_max();
   ReplicaSeries series;
   series.species.resize(scene.species.size());
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  std::size_t first = 0;
+  if (const ReplicaInFlight* earlier = options.restored_in_flight ? options.restored_in_flight(replica) : nullptr) {
+    sim.restore(earlier->dsmc);
+    series = earlier->series;
+    initial_majorant = earlier->initial_majorant;
+    first = static_cast<std::size_t>(earlier->samples_taken);
+  }
+  for (std::size_t k = first; k < times.size(); ++k) {
     sim.advance_to(times[k]);
     const GasTotals summed = sim.observe(series, k >= first_stationary_sample(times.size()));
     series.energy_residual = std::max(series.energy_residual.value_or(0.0),
@@ -34,7 +45,9 @@ ReplicaSeries run_dsmc_replica(Sim& sim, const Scene& scene, const std::vector<d
                                          effective_collision_frequency(scene, series.temperature.back()));
     }
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
-    if (on_sample) on_sample();
+    if (k + 1 < times.size() && options.in_flight_wanted && options.in_flight_wanted(replica))
+      options.on_in_flight(replica, ReplicaInFlight{series, k + 1, initial_majorant, sim.snapshot()});
+    if (options.on_sample) options.on_sample();
   }
   for (const CollisionTally& pair : sim.pair_tallies()) series.pair_collisions.push_back(pair.collisions);
   for (std::size_t q = 0; q < initial_majorant.size(); ++q)

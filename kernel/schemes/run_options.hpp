@@ -5,6 +5,7 @@
 
 #include "kernel/core/ranks.hpp"
 #include "kernel/observe/gas_series.hpp"
+#include "kernel/schemes/replica_in_flight.hpp"
 
 namespace granmc {
 
@@ -38,6 +39,13 @@ struct RunOptions {
   std::function<const ReplicaSeries*(std::uint64_t)> restored;
   std::function<void(std::uint64_t, const ReplicaSeries&)> on_replica;
   std::function<bool()> interrupted;
+  // Replicas in flight, for a scheme that can stop at a sample and go on (the time-stepped one,
+  // schemes/replica_in_flight.hpp): after each observation but the last, when `in_flight_wanted(r)`, it hands
+  // replica r's state to `on_in_flight` (before on_sample, which may then stop it); `restored_in_flight(r)` is
+  // such a state from an earlier run to go on from, or null.
+  std::function<bool(std::uint64_t)> in_flight_wanted;
+  std::function<void(std::uint64_t, ReplicaInFlight&&)> on_in_flight;
+  std::function<const ReplicaInFlight*(std::uint64_t)> restored_in_flight;
 };
 
 }  // namespace granmc

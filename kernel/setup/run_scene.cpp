@@ -31,7 +31,7 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Kernel& 
     for (int r = 0; r < scene.run.replicas; ++r) {
       BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, static_cast<std::uint64_t>(r),
                                                        Backend(scene, *options.spread), kernel, effects...);
-      result.replicas.push_back(run_dsmc_replica(sim, scene, result.times, options.on_sample));
+      result.replicas.push_back(run_dsmc_replica(sim, scene, result.times, static_cast<std::uint64_t>(r), options));
     }
     return result;
   } else {
@@ -41,7 +41,7 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Kernel& 
         run_replicas(scene, options, share, [&](std::uint64_t replica, const std::vector<double>& times) {
           BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, replica, Backend(scene, share.inside), kernel,
                                                            effects...);
-          ReplicaSeries series = run_dsmc_replica(sim, scene, times, options.on_sample);
+          ReplicaSeries series = run_dsmc_replica(sim, scene, times, replica, options);
           const CollisionRoundCounts& its = sim.backend().rounds().counts;
 #pragma omp critical(granmc_round_counts)
           {

@@ -1,0 +1,67 @@
+#pragma once
+// A replica stopped at a sample time, with what it needs to go on and give the same bits as a run that never
+// stopped: its series so far and the state of its scheme. Checkpoints keep it (io/checkpoint.hpp,
+// drivers/run_checkpoints.hpp); the time-stepped scheme makes and restores it (schemes/dsmc.hpp,
+// schemes/dsmc_replica.hpp). The other schemes keep whole replicas only.
+#include <cstdint>
+#include <vector>
+
+#include "kernel/core/sym_tensor.hpp"
+#include "kernel/observe/gas_series.hpp"
+#include "kernel/schemes/collision_stage.hpp"
+
+namespace granmc {
+
+/// The state of a time-stepped replica (schemes/dsmc.hpp) at a sample time, where no effect owes a half
+/// step. The per-step scratch (candidates, step tallies) is rebuilt by the next step.
+struct DsmcSnapshot {
+  std::vector<std::vector<double>> velocities;  // per species: x, y, z of each particle, stored units
+  double log_u = 0.0;                           // the velocity scale (core/velocity_scale.hpp)
+  double time = 0.0;
+  std::uint64_t step = 0;  // the random streams' step counter
+  std::vector<double> omega_max;
+  std::vector<double> carried;  // fractional candidates carried to the next step, per pair
+  CollisionTally total;
+  std::vector<CollisionTally> pair_totals;
+  double twice_energy = 0.0;
+  double reference_twice_energy = 0.0;
+  double log_temperature0 = 0.0;
+  double momentum_removed = 0.0;
+  std::uint64_t rescales = 0;
+  SymTensor transfer_integral;
+  double transfer_since = 0.0;
+};
+
+struct ReplicaInFlight {
+  ReplicaSeries series;                  // the observations so far
+  std::uint64_t samples_taken = 0;       // the next sample time is times[samples_taken]
+  std::vector<double> initial_majorant;  // per pair, for the series' majorant_growth at the end
+  DsmcSnapshot dsmc;
+};
+
+// Every field, in one order (the checkpoint's packing walks it, io/replica_bytes.hpp).
+template <class S, class Visit>
+void visit_snapshot_fields(S& s, Visit&& visit) {
+  visit("velocities", s.velocities);
+  visit("log_u", s.log_u);
+  visit("time", s.time);
+  visit("step", s.step);
+  visit("omega_max", s.omega_max);
+  visit("carried", s.carried);
+  visit("total", s.total);
+  visit("pair_totals", s.pair_totals);
+  visit("twice_energy", s.twice_energy);
+  visit("reference_twice_energy", s.reference_twice_energy);
+  visit("log_temperature0", s.log_temperature0);
+  visit("momentum_removed", s.momentum_removed);
+  visit("rescales", s.rescales);
+  visit("transfer_integral", s.transfer_integral);
+  visit("transfer_since", s.transfer_since);
+}
+
+#if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
+// Tripwire: a field added to DsmcSnapshot must be added to the list above; then update the size.
+static_assert(sizeof(DsmcSnapshot) == 304, "DsmcSnapshot changed: add the new field to visit_snapshot_fields");
+#endif
+
+}  // namespace granmc
