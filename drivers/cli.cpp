@@ -191,8 +191,9 @@ int run_command(const RunArgs& args) {
     try {
       const std::string& file = checkpoints->write_now();
       std::cerr << "granmc: interrupted; " << checkpoints->finished() << " of " << scene.run.replicas
-                << " replicas finished and are kept in " << file << "; continue with: granmc run " << args.scene
-                << " --resume " << file << " (and the same --out, --summary and --seed)\n";
+                << " replicas finished and " << checkpoints->in_flight() << " stopped at a sample time are kept in "
+                << file << "; continue with: granmc run " << args.scene << " --resume " << file
+                << " (and the same --out, --summary and --seed)\n";
     } catch (const std::exception& e) {
       std::cerr << "granmc: interrupted, and " << e.what() << "\n";
     }

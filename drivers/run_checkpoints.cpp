@@ -133,4 +133,9 @@ std::size_t RunCheckpoints::finished() const {
   return checkpoint_.finished.size();
 }
 
+std::size_t RunCheckpoints::in_flight() const {
+  const std::lock_guard lock(mutex_);
+  return checkpoint_.in_flight.size();
+}
+
 }  // namespace granmc

@@ -51,6 +51,8 @@ class RunCheckpoints {
   void run_completed();
 
   [[nodiscard]] std::size_t finished() const;
+  /// Replicas kept at a sample time, to go on from there.
+  [[nodiscard]] std::size_t in_flight() const;
   [[nodiscard]] std::size_t restored() const noexcept { return restored_; }
   /// Replicas the resumed checkpoint had in flight (the time-stepped scheme goes on with them mid-run).
   [[nodiscard]] std::size_t restored_in_flight() const noexcept { return restored_in_flight_; }

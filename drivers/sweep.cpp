@@ -140,8 +140,8 @@ bool run_sweep_scene(const SweepScene& s, const fs::path& dir, const SweepArgs& 
   } catch (const RunInterrupted&) {
     const std::string& file = checkpoints->write_now();
     std::cerr << "granmc sweep: interrupted in " << s.name << "; " << checkpoints->finished() << " of "
-              << s.scene.run.replicas << " replicas finished and are kept in " << file
-              << "; run the same sweep again to continue\n";
+              << s.scene.run.replicas << " replicas finished and " << checkpoints->in_flight()
+              << " stopped at a sample time are kept in " << file << "; run the same sweep again to continue\n";
     return false;
   }
 }
