@@ -260,7 +260,8 @@ TEST_F(Sweep, ScenesMadeByAnotherBuildRunAgainUnlessKept) {
             std::string::npos)
       << rerun.stdout_text;
   EXPECT_NE(rerun.stdout_text.find("(2 run, 0 skipped)"), std::string::npos) << rerun.stdout_text;
-  for (const auto& scene : json("alpha/index.json")["scenes"]) EXPECT_EQ(scene["build"], this_build) << scene;
+  const nlohmann::json after = json("alpha/index.json");  // alive through the loop
+  for (const auto& scene : after["scenes"]) EXPECT_EQ(scene["build"], this_build) << scene;
 }
 
 TEST_F(Sweep, InterruptedSweepResumesInsideTheInterruptedScene) {
