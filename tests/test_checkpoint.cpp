@@ -1,6 +1,7 @@
-// Checkpoints and restart (io/checkpoint.hpp, drivers/run_checkpoints.hpp): the file round trip and its
-// refusals, and `granmc run` interrupted by SIGINT or killed with SIGKILL, then resumed, writing the files of
-// an uninterrupted run.
+// Checkpoints and restart (drivers/run_checkpoints.hpp): `granmc run` and `granmc sweep` interrupted by SIGINT
+// or killed with SIGKILL, then resumed, writing the files of an uninterrupted run. Runs of a second or more
+// each, so the sanitizer builds leave this suite out (heavy); the file format's tests are
+// tests/test_checkpoint_file.cpp.
 #include <signal.h>
 #include <sys/types.h>
 
@@ -29,35 +30,11 @@ namespace fs = std::filesystem;
 using granmc_test::Outcome;
 using granmc_test::slurp;
 
-Checkpoint small_checkpoint() {
-  Checkpoint c;
-  c.build = "0.1.0+0123456789ab";
-  c.scene_text = "[run]\nreplicas = 3\n";
-  c.seed = 7;
-  c.replicas = 3;
-  ReplicaSeries a, b;
-  a.temperature = {1.0, 0.5, 0.25};
-  a.collisions = {0.0, 10.0, 20.0};
-  b.temperature = {1.0, 0.6, 0.3};
-  b.intruder = IntruderSeries{};
-  b.intruder->velocity = {0.1, -0.2};
-  c.finished.emplace(0, a);
-  c.finished.emplace(2, b);
-  ReplicaInFlight f;
-  f.series.temperature = {1.0, 0.7};
-  f.samples_taken = 2;
-  f.initial_majorant = {3.5};
-  f.dsmc.velocities = {{0.1, 0.2, 0.3, -0.4, -0.5, -0.6}, {1.5, 2.5, 3.5}};
-  f.dsmc.step = 41, f.dsmc.time = 0.41, f.dsmc.omega_max = {3.75}, f.dsmc.carried = {0.25};
-  f.dsmc.total.collisions = 99, f.dsmc.pair_totals = {f.dsmc.total}, f.dsmc.transfer_integral.xy = -0.125;
-  c.in_flight.emplace(1, f);
-  return c;
-}
-
 class Checkpoints : public granmc_test::GranmcDirectory {
  protected:
   Checkpoints() : GranmcDirectory("granmc_checkpoint_") {}
 
+  nlohmann::json json(const std::string& name) const { return nlohmann::json::parse(slurp(dir_ / name)); }
   /// A summary without the records that describe the machine or the build.
   nlohmann::json numbers(const std::string& name) const {
     nlohmann::json j = nlohmann::json::parse(slurp(dir_ / name));
@@ -78,86 +55,6 @@ particles = 200000
 [collision]
 restitution = 0.8
 )";
-
-TEST(CheckpointFile, RoundTripKeepsTheIdentityAndEveryReplica) {
-  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_round_trip";
-  const Checkpoint c = small_checkpoint();
-  write_checkpoint(path.string(), c);
-  const Checkpoint back = read_checkpoint(path.string());
-  EXPECT_EQ(back.build, c.build);
-  EXPECT_EQ(back.scene_text, c.scene_text);
-  EXPECT_EQ(back.seed, 7u);
-  EXPECT_EQ(back.replicas, 3u);
-  ASSERT_EQ(back.finished.size(), 2u);
-  EXPECT_EQ(back.finished.at(0).temperature, c.finished.at(0).temperature);
-  EXPECT_EQ(back.finished.at(2).intruder->velocity, c.finished.at(2).intruder->velocity);
-  ASSERT_EQ(back.in_flight.size(), 1u);
-  const ReplicaInFlight &f = back.in_flight.at(1), &g = c.in_flight.at(1);
-  EXPECT_EQ(f.series.temperature, g.series.temperature);
-  EXPECT_EQ(f.samples_taken, 2u);
-  EXPECT_EQ(f.initial_majorant, g.initial_majorant);
-  EXPECT_EQ(f.dsmc.velocities, g.dsmc.velocities);
-  EXPECT_EQ(f.dsmc.step, 41u);
-  EXPECT_EQ(f.dsmc.omega_max, g.dsmc.omega_max);
-  EXPECT_EQ(f.dsmc.carried, g.dsmc.carried);
-  EXPECT_EQ(f.dsmc.total.collisions, 99u);
-  EXPECT_EQ(f.dsmc.pair_totals.size(), 1u);
-  EXPECT_EQ(f.dsmc.transfer_integral.xy, -0.125);
-  EXPECT_EQ(checkpoint_mismatch(back, c.build, c.scene_text, 7, 3), "");
-  EXPECT_NE(checkpoint_mismatch(back, "0.1.0+ffffffffffff", c.scene_text, 7, 3).find("written by granmc"),
-            std::string::npos);
-  EXPECT_NE(checkpoint_mismatch(back, c.build, "[run]\n", 7, 3).find("another scene"), std::string::npos);
-  EXPECT_NE(checkpoint_mismatch(back, c.build, c.scene_text, 8, 3).find("seed 7"), std::string::npos);
-  EXPECT_NE(checkpoint_mismatch(back, c.build, c.scene_text, 7, 4).find("3 replicas"), std::string::npos);
-  fs::remove(path);
-}
-
-TEST(CheckpointFile, BadFilesAreRefusedSayingWhy) {
-  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_bad";
-  write_checkpoint(path.string(), small_checkpoint());
-  const std::string good = slurp(path);
-  auto refusal = [&](const std::string& bytes) {
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-    try {
-      read_checkpoint(path.string());
-    } catch (const CheckpointError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
-  EXPECT_NE(refusal("[run]\nseed = 1\n").find("is not a granmc checkpoint"), std::string::npos);
-  EXPECT_NE(refusal(good.substr(0, 40)).find("corrupt"), std::string::npos);
-  std::string flipped = good;
-  flipped[good.size() / 2] ^= 0x10;
-  EXPECT_NE(refusal(flipped).find("checksum"), std::string::npos);
-  std::string other_version = good;
-  other_version[std::string("granmc checkpoint\n").size()] = 9;  // the format version's low byte
-  EXPECT_NE(refusal(other_version).find("checkpoint format 9"), std::string::npos);
-  fs::remove(path);
-  EXPECT_NE(refusal("").find("is not a granmc checkpoint"), std::string::npos);
-  fs::remove(path);
-}
-
-TEST(CheckpointFile, AFailedWriteLeavesThePreviousCheckpoint) {
-  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_failed_write";
-  write_checkpoint(path.string(), small_checkpoint());
-  const std::string before = slurp(path);
-  // The temporary name is taken by a directory, so the write fails as on a full disk: before the rename.
-  const fs::path blocker = path.string() + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
-  fs::create_directory(blocker);
-  Checkpoint other = small_checkpoint();
-  other.seed = 8;
-  try {
-    write_checkpoint(path.string(), other);
-    ADD_FAILURE() << "the write did not fail";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("the previous checkpoint, if any, is intact"), std::string::npos) << e.what();
-  }
-  EXPECT_EQ(slurp(path), before);
-  EXPECT_EQ(read_checkpoint(path.string()).seed, 7u);
-  fs::remove(blocker);
-  fs::remove(path);
-}
 
 TEST_F(Checkpoints, InterruptedRunResumesToTheFilesOfAnUninterruptedOne) {
   write("s.toml", scene);
@@ -323,6 +220,39 @@ TEST_F(Checkpoints, KilledAtRandomAndResumedEachTimeGivesTheSameFiles) {
   EXPECT_GE(kills, 2);  // the run takes several times the longest wait
   ASSERT_TRUE(exists("part.json"));
   EXPECT_EQ(numbers("part.json"), numbers("full.json"));
+}
+
+TEST_F(Checkpoints, InterruptedSweepResumesInsideTheInterruptedScene) {
+  // Two scenes of 8 replicas, about a second each on 2 cores; SIGINT during the second keeps its finished
+  // replicas in its checkpoint, and the rerun continues from it: the files are those of an uninterrupted sweep.
+  write("base.toml",
+        "[run]\nt_end = 0.5\ndt = 0.01\nsamples = 5\nreplicas = 8\n[[species]]\nparticles = 200000\n"
+        "[collision]\nrestitution = 0.9\n");
+  write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.6, 0.8]\n\"run.t_end\" = [8.0]\n");
+  ASSERT_EQ(granmc("sweep alpha.toml --out-dir whole --quiet").status, 0);
+
+  const pid_t pid = start("sweep alpha.toml --out-dir cut");
+  for (int k = 0;
+       k < 12000 && slurp(dir_ / "out.txt").find("scene 1 of 2") == std::string::npos && slurp(dir_ / "rc.txt").empty();
+       ++k)
+    sleep_ms(5);
+  sleep_ms(400);  // into the second scene
+  ::kill(pid, SIGINT);
+  const int status = wait_exit();
+  if (status == 0) GTEST_SKIP() << "the sweep ended before the signal";
+  ASSERT_EQ(status, 3) << slurp(dir_ / "err.txt");
+  const std::string second = "restitution0.8_t_end8.0";
+  EXPECT_NE(slurp(dir_ / "err.txt").find("interrupted in " + second), std::string::npos) << slurp(dir_ / "err.txt");
+  EXPECT_TRUE(exists("cut/" + second + ".h5.checkpoint"));
+  EXPECT_EQ(json("cut/index.json")["scenes"][1]["status"], "pending");
+
+  const Outcome resumed = granmc("sweep alpha.toml --out-dir cut");
+  ASSERT_EQ(resumed.status, 0) << resumed.stderr_text;
+  EXPECT_NE(resumed.stdout_text.find(second + " resumes from cut/" + second + ".h5.checkpoint"), std::string::npos)
+      << resumed.stdout_text;
+  EXPECT_FALSE(exists("cut/" + second + ".h5.checkpoint"));
+  for (const std::string name : {"restitution0.6_t_end8.0.json", "restitution0.8_t_end8.0.json"})
+    EXPECT_EQ(numbers("cut/" + name), numbers("whole/" + name)) << name;
 }
 
 }  // namespace

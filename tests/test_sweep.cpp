@@ -2,8 +2,7 @@
 // summary per scene and an index, with the numbers `granmc run` writes for the same scene; a sweep killed
 // mid-scene leaves nothing under the unfinished scene's names, and its rerun skips the finished scene
 // (files untouched), removes stale temporary files and completes the rest; an edited base reruns; a bad
-// sweep file exits 2 with one message and writes nothing; a sweep interrupted by SIGINT resumes inside the
-// interrupted scene from its checkpoint.
+// sweep file exits 2 with one message and writes nothing. (A sweep interrupted by SIGINT: tests/test_checkpoint.cpp.)
 #include <fcntl.h>
 #include <hdf5.h>
 #include <signal.h>
@@ -262,39 +261,6 @@ TEST_F(Sweep, ScenesMadeByAnotherBuildRunAgainUnlessKept) {
   EXPECT_NE(rerun.stdout_text.find("(2 run, 0 skipped)"), std::string::npos) << rerun.stdout_text;
   const nlohmann::json after = json("alpha/index.json");  // alive through the loop
   for (const auto& scene : after["scenes"]) EXPECT_EQ(scene["build"], this_build) << scene;
-}
-
-TEST_F(Sweep, InterruptedSweepResumesInsideTheInterruptedScene) {
-  // Two scenes of 8 replicas, about a second each on 2 cores; SIGINT during the second keeps its finished
-  // replicas in its checkpoint, and the rerun continues from it: the files are those of an uninterrupted sweep.
-  write("base.toml",
-        "[run]\nt_end = 0.5\ndt = 0.01\nsamples = 5\nreplicas = 8\n[[species]]\nparticles = 200000\n"
-        "[collision]\nrestitution = 0.9\n");
-  write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.6, 0.8]\n\"run.t_end\" = [8.0]\n");
-  ASSERT_EQ(granmc("sweep alpha.toml --out-dir whole --quiet").status, 0);
-
-  const pid_t pid = start("sweep alpha.toml --out-dir cut");
-  for (int k = 0;
-       k < 12000 && slurp(dir_ / "out.txt").find("scene 1 of 2") == std::string::npos && slurp(dir_ / "rc.txt").empty();
-       ++k)
-    sleep_ms(5);
-  sleep_ms(400);  // into the second scene
-  ::kill(pid, SIGINT);
-  const int status = wait_exit();
-  if (status == 0) GTEST_SKIP() << "the sweep ended before the signal";
-  ASSERT_EQ(status, 3) << slurp(dir_ / "err.txt");
-  const std::string second = "restitution0.8_t_end8.0";
-  EXPECT_NE(slurp(dir_ / "err.txt").find("interrupted in " + second), std::string::npos) << slurp(dir_ / "err.txt");
-  EXPECT_TRUE(exists("cut/" + second + ".h5.checkpoint"));
-  EXPECT_EQ(json("cut/index.json")["scenes"][1]["status"], "pending");
-
-  const Outcome resumed = granmc("sweep alpha.toml --out-dir cut");
-  ASSERT_EQ(resumed.status, 0) << resumed.stderr_text;
-  EXPECT_NE(resumed.stdout_text.find(second + " resumes from cut/" + second + ".h5.checkpoint"), std::string::npos)
-      << resumed.stdout_text;
-  EXPECT_FALSE(exists("cut/" + second + ".h5.checkpoint"));
-  for (const std::string name : {"restitution0.6_t_end8.0.json", "restitution0.8_t_end8.0.json"})
-    EXPECT_EQ(numbers(json("cut/" + name)), numbers(json("whole/" + name))) << name;
 }
 
 // Like a bad scene: exit 2 before any work, one line naming the sweep file and what is wrong, no output.

@@ -1,0 +1,128 @@
+// The checkpoint file (io/checkpoint.hpp): the round trip of finished replicas and replicas in flight, the
+// refusals of foreign, truncated, corrupt and other-format files, and a failed write that keeps the previous
+// checkpoint.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "io/checkpoint.hpp"
+#include "tests/granmc_process.hpp"
+
+namespace granmc {
+namespace {
+
+namespace fs = std::filesystem;
+using granmc_test::slurp;
+
+Checkpoint small_checkpoint() {
+  Checkpoint c;
+  c.build = "0.1.0+0123456789ab";
+  c.scene_text = "[run]\nreplicas = 3\n";
+  c.seed = 7;
+  c.replicas = 3;
+  ReplicaSeries a, b;
+  a.temperature = {1.0, 0.5, 0.25};
+  a.collisions = {0.0, 10.0, 20.0};
+  b.temperature = {1.0, 0.6, 0.3};
+  b.intruder = IntruderSeries{};
+  b.intruder->velocity = {0.1, -0.2};
+  c.finished.emplace(0, a);
+  c.finished.emplace(2, b);
+  ReplicaInFlight f;
+  f.series.temperature = {1.0, 0.7};
+  f.samples_taken = 2;
+  f.initial_majorant = {3.5};
+  f.dsmc.velocities = {{0.1, 0.2, 0.3, -0.4, -0.5, -0.6}, {1.5, 2.5, 3.5}};
+  f.dsmc.step = 41, f.dsmc.time = 0.41, f.dsmc.omega_max = {3.75}, f.dsmc.carried = {0.25};
+  f.dsmc.total.collisions = 99, f.dsmc.pair_totals = {f.dsmc.total}, f.dsmc.transfer_integral.xy = -0.125;
+  c.in_flight.emplace(1, f);
+  return c;
+}
+
+TEST(CheckpointFile, RoundTripKeepsTheIdentityAndEveryReplica) {
+  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_round_trip";
+  const Checkpoint c = small_checkpoint();
+  write_checkpoint(path.string(), c);
+  const Checkpoint back = read_checkpoint(path.string());
+  EXPECT_EQ(back.build, c.build);
+  EXPECT_EQ(back.scene_text, c.scene_text);
+  EXPECT_EQ(back.seed, 7u);
+  EXPECT_EQ(back.replicas, 3u);
+  ASSERT_EQ(back.finished.size(), 2u);
+  EXPECT_EQ(back.finished.at(0).temperature, c.finished.at(0).temperature);
+  EXPECT_EQ(back.finished.at(2).intruder->velocity, c.finished.at(2).intruder->velocity);
+  ASSERT_EQ(back.in_flight.size(), 1u);
+  const ReplicaInFlight &f = back.in_flight.at(1), &g = c.in_flight.at(1);
+  EXPECT_EQ(f.series.temperature, g.series.temperature);
+  EXPECT_EQ(f.samples_taken, 2u);
+  EXPECT_EQ(f.initial_majorant, g.initial_majorant);
+  EXPECT_EQ(f.dsmc.velocities, g.dsmc.velocities);
+  EXPECT_EQ(f.dsmc.step, 41u);
+  EXPECT_EQ(f.dsmc.omega_max, g.dsmc.omega_max);
+  EXPECT_EQ(f.dsmc.carried, g.dsmc.carried);
+  EXPECT_EQ(f.dsmc.total.collisions, 99u);
+  EXPECT_EQ(f.dsmc.pair_totals.size(), 1u);
+  EXPECT_EQ(f.dsmc.transfer_integral.xy, -0.125);
+  EXPECT_EQ(checkpoint_mismatch(back, c.build, c.scene_text, 7, 3), "");
+  EXPECT_NE(checkpoint_mismatch(back, "0.1.0+ffffffffffff", c.scene_text, 7, 3).find("written by granmc"),
+            std::string::npos);
+  EXPECT_NE(checkpoint_mismatch(back, c.build, "[run]\n", 7, 3).find("another scene"), std::string::npos);
+  EXPECT_NE(checkpoint_mismatch(back, c.build, c.scene_text, 8, 3).find("seed 7"), std::string::npos);
+  EXPECT_NE(checkpoint_mismatch(back, c.build, c.scene_text, 7, 4).find("3 replicas"), std::string::npos);
+  fs::remove(path);
+}
+
+TEST(CheckpointFile, BadFilesAreRefusedSayingWhy) {
+  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_bad";
+  write_checkpoint(path.string(), small_checkpoint());
+  const std::string good = slurp(path);
+  auto refusal = [&](const std::string& bytes) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    try {
+      read_checkpoint(path.string());
+    } catch (const CheckpointError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refusal("[run]\nseed = 1\n").find("is not a granmc checkpoint"), std::string::npos);
+  EXPECT_NE(refusal(good.substr(0, 40)).find("corrupt"), std::string::npos);
+  std::string flipped = good;
+  flipped[good.size() / 2] ^= 0x10;
+  EXPECT_NE(refusal(flipped).find("checksum"), std::string::npos);
+  std::string other_version = good;
+  other_version[std::string("granmc checkpoint\n").size()] = 9;  // the format version's low byte
+  EXPECT_NE(refusal(other_version).find("checkpoint format 9"), std::string::npos);
+  fs::remove(path);
+  EXPECT_NE(refusal("").find("is not a granmc checkpoint"), std::string::npos);
+  fs::remove(path);
+}
+
+TEST(CheckpointFile, AFailedWriteLeavesThePreviousCheckpoint) {
+  const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_failed_write";
+  write_checkpoint(path.string(), small_checkpoint());
+  const std::string before = slurp(path);
+  // The temporary name is taken by a directory, so the write fails as on a full disk: before the rename.
+  const fs::path blocker = path.string() + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+  fs::create_directory(blocker);
+  Checkpoint other = small_checkpoint();
+  other.seed = 8;
+  try {
+    write_checkpoint(path.string(), other);
+    ADD_FAILURE() << "the write did not fail";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the previous checkpoint, if any, is intact"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(path), before);
+  EXPECT_EQ(read_checkpoint(path.string()).seed, 7u);
+  fs::remove(blocker);
+  fs::remove(path);
+}
+
+}  // namespace
+}  // namespace granmc
