@@ -150,8 +150,121 @@ Count paper_majorant(Gas<Real>& gas, double c, int steps, std::uint64_t seed) {
   return count;
 }
 
-/// The pair bounds s_k + s_l, `steps` steps with rate constant c.
+/// Whether the try (k, u) selects k: u s_max < s_k, tested on squares (the square root for the accepted k only).
 template <class Real>
+bool selects(Gas<Real>& gas, std::uint64_t k, double u, double largest) noexcept {
+  const double threshold = u * largest;
+  return threshold * threshold < gas.far2(gas[k].velocity());
+}
+
+/// A selection try from one 64-bit word of `tries`, its record prefetched.
+template <class Real>
+void draw_try(Gas<Real>& gas, SplitMix64& tries, std::uint64_t& k, double& u) {
+  const std::uint64_t word = tries.next();
+  k = index_of_word(word, gas.size());
+  u = uniform_of_word(word);
+  __builtin_prefetch(&gas[k], 1, 3);
+}
+
+/// k in proportion to s_k by rejection, one try after the other, each drawn a ring of kAhead tries before
+/// its turn.
+template <class Real>
+class PlainSelection {
+ public:
+  PlainSelection(Gas<Real>& gas, SplitMix64& tries, const double& largest, Count& count)
+      : gas_(gas), tries_(tries), largest_(largest), count_(count) {
+    for (std::size_t s = 0; s < kAhead; ++s) draw_try(gas_, tries_, k_[s], u_[s]);
+  }
+  std::uint64_t next() {
+    for (;;) {
+      const std::size_t slot = next_++ % kAhead;
+      const std::uint64_t k = k_[slot];
+      const double u = u_[slot];
+      draw_try(gas_, tries_, k_[slot], u_[slot]);
+      ++count_.selection_draws;
+      if (selects(gas_, k, u, largest_)) return k;
+    }
+  }
+  void touched(std::uint64_t, std::uint64_t, bool) noexcept {}
+
+ private:
+  Gas<Real>& gas_;
+  SplitMix64& tries_;
+  const double& largest_;
+  Count& count_;
+  std::uint64_t k_[kAhead], next_ = 0;
+  double u_[kAhead];
+};
+
+/// The same tries screened a block at a time: a block's 16 tries are tested together, branch-free, when its
+/// first try's turn comes, and a try whose particle a later collision of the block's time touched (or every
+/// try left, when s_max rose) is tested again at its turn. So every try is decided on the velocities of its
+/// turn, the same bits as PlainSelection.
+template <class Real>
+class ScreenedSelection {
+ public:
+  ScreenedSelection(Gas<Real>& gas, SplitMix64& tries, const double& largest, Count& count)
+      : gas_(gas), tries_(tries), largest_(largest), count_(count) {
+    for (Block& b : ring_) fill(b);
+    accepted_ = evaluate(ring_[0]);
+  }
+  std::uint64_t next() {
+    for (;;) {
+      if (position_ == kBlock) {
+        fill(ring_[current_ % kBlocksAhead]);  // the tries kBlocksAhead blocks later
+        ++current_, position_ = 0, stale_ = 0;
+        accepted_ = evaluate(ring_[current_ % kBlocksAhead]);
+      }
+      const std::uint32_t rest = (accepted_ | stale_) >> position_;
+      if (rest == 0) {
+        count_.selection_draws += kBlock - position_;
+        position_ = kBlock;
+        continue;
+      }
+      const unsigned t = position_ + static_cast<unsigned>(std::countr_zero(rest));
+      count_.selection_draws += t - position_ + 1;
+      position_ = t + 1;
+      const Block& b = ring_[current_ % kBlocksAhead];
+      if (((stale_ >> t) & 1u) != 0 && !selects(gas_, b.k[t], b.u[t], largest_)) continue;
+      return b.k[t];
+    }
+  }
+  /// After a collision of k and l: their tries left in the block are tested again at their turn, and every
+  /// try left when s_max rose.
+  void touched(std::uint64_t k, std::uint64_t l, bool raised) noexcept {
+    const Block& b = ring_[current_ % kBlocksAhead];
+    for (unsigned i = 0; i < kBlock; ++i) stale_ |= static_cast<std::uint32_t>((b.k[i] == k) | (b.k[i] == l)) << i;
+    if (raised) stale_ = ~0u;
+  }
+
+ private:
+  static constexpr unsigned kBlock = 16, kBlocksAhead = 4;
+  struct Block {
+    std::uint64_t k[kBlock];
+    double u[kBlock];
+  };
+  void fill(Block& b) {
+    for (unsigned i = 0; i < kBlock; ++i) draw_try(gas_, tries_, b.k[i], b.u[i]);
+  }
+  std::uint32_t evaluate(const Block& b) const {
+    std::uint32_t mask = 0;
+    for (unsigned i = 0; i < kBlock; ++i)
+      mask |= static_cast<std::uint32_t>(selects(gas_, b.k[i], b.u[i], largest_)) << i;
+    return mask;
+  }
+
+  Gas<Real>& gas_;
+  SplitMix64& tries_;
+  const double& largest_;
+  Count& count_;
+  Block ring_[kBlocksAhead];
+  std::uint64_t current_ = 0;
+  unsigned position_ = 0;
+  std::uint32_t accepted_ = 0, stale_ = 0;
+};
+
+/// The pair bounds s_k + s_l, `steps` steps with rate constant c, k chosen by `Selection`.
+template <template <class> class Selection, class Real>
 Count pair_bounds(Gas<Real>& gas, double c, int steps, std::uint64_t seed) {
   Count count;
   const std::size_t n = gas.size();
@@ -161,130 +274,10 @@ Count pair_bounds(Gas<Real>& gas, double c, int steps, std::uint64_t seed) {
     sum += s, largest = std::max(largest, s);
   }
   SplitMix64 gen{seed}, tries{seed ^ 0x5A5A5A5Au}, partners{seed ^ 0xC3C3C3C3u};
-  std::uint64_t ring_try[kAhead], ring_l[kAhead];
-  double ring_u[kAhead];
-  auto draw_try = [&](std::size_t slot) {
-    const std::uint64_t word = tries.next();
-    ring_try[slot] = index_of_word(word, n);
-    ring_u[slot] = uniform_of_word(word);
-    __builtin_prefetch(&gas[ring_try[slot]], 1, 3);
-  };
-  auto draw_partner = [&](std::size_t slot) {
-    ring_l[slot] = index_below(partners, n - 1);  // mapped past k at use
-    __builtin_prefetch(&gas[ring_l[slot]], 1, 3);
-  };
-  for (std::size_t s = 0; s < kAhead; ++s) draw_try(s), draw_partner(s);
-  std::uint64_t next_try = 0, next = 0;
-  const auto start = std::chrono::steady_clock::now();
-  for (int step = 0; step < steps; ++step) {
-    const std::uint64_t m = candidates_of(c * static_cast<double>(n - 1) * sum, gen);
-    for (std::uint64_t i = 0; i < m; ++i, ++next) {
-      std::uint64_t k = 0;
-      Vec3 vk;
-      double sk = 0.0;
-      for (;;) {  // k in proportion to s_k
-        const std::size_t slot = next_try++ % kAhead;
-        k = ring_try[slot];
-        const double u = ring_u[slot];
-        draw_try(slot);
-        ++count.selection_draws;
-        vk = gas[k].velocity();
-        const double threshold = u * largest;  // on squares: the square root for the accepted draw only
-        if (threshold * threshold < gas.far2(vk)) break;
-      }
-      sk = gas.far(vk);
-      const std::size_t slot = next % kAhead;
-      const std::uint64_t l = ring_l[slot] + (ring_l[slot] >= k ? 1 : 0);
-      draw_partner(slot);
-      auto& rk = gas[k];
-      auto& rl = gas[l];
-      Vec3 vl = rl.velocity();
-      const double sl = gas.far(vl), g = granmc::norm(vk - vl);
-      if (uniform01(gen) * (sk + sl) >= g) continue;
-      granmc::isotropic_scattering(vk, vl, unit_vector(gen), 1.0);
-      rk.set(vk), rl.set(vl);
-      const double sk_new = gas.far(vk), sl_new = gas.far(vl);
-      sum += (sk_new - sk) + (sl_new - sl);
-      if (sk_new > largest || sl_new > largest) largest = std::max({largest, sk_new, sl_new});  // as below
-      ++count.collisions;
-    }
-    count.candidates += static_cast<double>(m);
-  }
-  count.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  count.temperature = gas.temperature();
-  return count;
-}
-
-/// The same as pair_bounds, with the selection draws screened a block at a time: a block's 16 tries are
-/// tested together, branch-free, when its first try's turn comes, and a try whose particle a later collision
-/// of the block's time touched (or every try left, when s_max rose) is tested again at its turn. So every
-/// try is decided on the velocities of its turn, the same bits as pair_bounds.
-template <class Real>
-Count pair_bounds_screened(Gas<Real>& gas, double c, int steps, std::uint64_t seed) {
-  Count count;
-  const std::size_t n = gas.size();
-  double sum = 0.0, largest = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double s = gas.far(gas[k].velocity());
-    sum += s, largest = std::max(largest, s);
-  }
-  SplitMix64 gen{seed}, tries{seed ^ 0x5A5A5A5Au}, partners{seed ^ 0xC3C3C3C3u};
-  constexpr unsigned kBlock = 16, kBlocksAhead = 4;
-  struct Block {
-    std::uint64_t k[kBlock];
-    double u[kBlock];
-  };
-  Block ring[kBlocksAhead];
-  auto fill = [&](Block& b) {
-    for (unsigned i = 0; i < kBlock; ++i) {
-      const std::uint64_t word = tries.next();
-      b.k[i] = index_of_word(word, n);
-      b.u[i] = uniform_of_word(word);
-      __builtin_prefetch(&gas[b.k[i]], 1, 3);
-    }
-  };
-  auto passes = [&](std::uint64_t k, double u) {
-    const double threshold = u * largest;
-    return threshold * threshold < gas.far2(gas[k].velocity());
-  };
-  auto evaluate = [&](const Block& b) {
-    std::uint32_t mask = 0;
-    for (unsigned i = 0; i < kBlock; ++i) mask |= static_cast<std::uint32_t>(passes(b.k[i], b.u[i])) << i;
-    return mask;
-  };
-  for (Block& b : ring) fill(b);
-  std::uint64_t current = 0;
-  unsigned position = 0;
-  std::uint32_t accepted = evaluate(ring[0]), stale = 0;
-  auto next_k = [&]() -> std::uint64_t {
-    for (;;) {
-      if (position == kBlock) {
-        fill(ring[current % kBlocksAhead]);  // the tries kBlocksAhead blocks later
-        ++current, position = 0, stale = 0;
-        accepted = evaluate(ring[current % kBlocksAhead]);
-      }
-      const std::uint32_t rest = (accepted | stale) >> position;
-      if (rest == 0) {
-        count.selection_draws += kBlock - position;
-        position = kBlock;
-        continue;
-      }
-      const unsigned t = position + static_cast<unsigned>(std::countr_zero(rest));
-      count.selection_draws += t - position + 1;
-      position = t + 1;
-      const Block& b = ring[current % kBlocksAhead];
-      if (((stale >> t) & 1u) != 0 && !passes(b.k[t], b.u[t])) continue;
-      return b.k[t];
-    }
-  };
-  auto touched = [&](std::uint64_t k, std::uint64_t l, bool raised) {
-    const Block& b = ring[current % kBlocksAhead];
-    for (unsigned i = 0; i < kBlock; ++i) stale |= static_cast<std::uint32_t>((b.k[i] == k) | (b.k[i] == l)) << i;
-    if (raised) stale = ~0u;
-  };
+  Selection<Real> selection(gas, tries, largest, count);
   std::uint64_t ring_l[kAhead];
   auto draw_partner = [&](std::size_t slot) {
-    ring_l[slot] = index_below(partners, n - 1);
+    ring_l[slot] = index_below(partners, n - 1);  // mapped past k at use
     __builtin_prefetch(&gas[ring_l[slot]], 1, 3);
   };
   for (std::size_t s = 0; s < kAhead; ++s) draw_partner(s);
@@ -293,7 +286,7 @@ Count pair_bounds_screened(Gas<Real>& gas, double c, int steps, std::uint64_t se
   for (int step = 0; step < steps; ++step) {
     const std::uint64_t m = candidates_of(c * static_cast<double>(n - 1) * sum, gen);
     for (std::uint64_t i = 0; i < m; ++i, ++next) {
-      const std::uint64_t k = next_k();
+      const std::uint64_t k = selection.next();  // k in proportion to s_k
       Vec3 vk = gas[k].velocity();
       const double sk = gas.far(vk);
       const std::size_t slot = next % kAhead;
@@ -311,7 +304,7 @@ Count pair_bounds_screened(Gas<Real>& gas, double c, int steps, std::uint64_t se
       // A branch, rarely taken, not a max: the next selection then waits on this collision only when s_max rises.
       const bool raised = sk_new > largest || sl_new > largest;
       if (raised) largest = std::max({largest, sk_new, sl_new});
-      touched(k, l, raised);
+      selection.touched(k, l, raised);
       ++count.collisions;
     }
     count.candidates += static_cast<double>(m);
@@ -331,8 +324,8 @@ void study(std::size_t n, int steps, int passes, std::uint64_t seed) {
   for (int p = 0; p < passes; ++p) {
     Gas<Real> first(n, seed), second(n, seed), third(n, seed);  // the same initial state
     const Count a = paper_majorant(first, c, steps, seed + 1 + p);
-    const Count b = pair_bounds(second, c, steps, seed + 1 + p);
-    const Count d = pair_bounds_screened(third, c, steps, seed + 1 + p);
+    const Count b = pair_bounds<PlainSelection>(second, c, steps, seed + 1 + p);
+    const Count d = pair_bounds<ScreenedSelection>(third, c, steps, seed + 1 + p);
     if (b.collisions != d.collisions || b.temperature != d.temperature || b.selection_draws != d.selection_draws)
       std::printf("# n = %zu: the screened selection differs from the plain one\n", n);
     if (a.seconds < best_paper.seconds) best_paper = a;
