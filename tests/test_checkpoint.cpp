@@ -117,7 +117,6 @@ beta = 30.0
 [output]
 histogram = { shells = 64, radius = 40.0 }
 )";
-const std::string weighted_scene = event_scene;  // with [weights] and 20 000 particles, below
 const std::string intruder_scene = R"([run]
 method = "gillespie"
 seed = 7
@@ -136,7 +135,7 @@ histogram = { shells = 100, radius = 5.0 }
 )";
 
 TEST_F(Checkpoints, EverySchemeResumesToTheFilesOfAnUninterruptedRun) {
-  std::string weighted = weighted_scene;
+  std::string weighted = event_scene;  // with [weights], 20 000 particles and a shorter run
   weighted.replace(weighted.find("t_end = 8.0"), 11, "t_end = 0.6");
   weighted.replace(weighted.find("particles = 100000"), 18, "particles = 20000");
   weighted += "[weights]\nscheme = \"swpm\"\nparticles_per_shell = 128\n";
