@@ -21,6 +21,7 @@
 #include "drivers/run_job.hpp"
 #include "granmc/version.hpp"
 #include "io/build_id.hpp"
+#include "io/fnv1a.hpp"
 #include "io/summary_json.hpp"
 #include "io/sweep_file.hpp"
 #include "kernel/setup/run_plan.hpp"
@@ -36,16 +37,10 @@ namespace fs = std::filesystem;
 
 constexpr const char* index_name = "index.json";
 
-/// FNV-1a, 64 bits, of the scene text: stable across builds and machines (std::hash is not), and enough to
-/// notice an edited scene; it guards against accidents, not against an adversary.
+/// FNV-1a, 64 bits, of the scene text (io/fnv1a.hpp): enough to notice an edited scene.
 std::string scene_hash(const std::string& text) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const char c : text) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ULL;
-  }
   char buf[32];
-  std::snprintf(buf, sizeof buf, "fnv1a64:%016llx", static_cast<unsigned long long>(h));
+  std::snprintf(buf, sizeof buf, "fnv1a64:%016llx", static_cast<unsigned long long>(fnv1a64(text)));
   return buf;
 }
 

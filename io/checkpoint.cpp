@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
+#include "io/fnv1a.hpp"
 #include "io/replica_bytes.hpp"
 
 namespace granmc {
@@ -17,12 +18,7 @@ constexpr std::string_view magic = "granmc checkpoint\n";
 constexpr std::uint32_t byte_order_mark = 0x01020304;
 
 std::uint64_t fnv1a(std::span<const std::byte> bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const std::byte b : bytes) {
-    h ^= static_cast<std::uint8_t>(b);
-    h *= 0x100000001b3ULL;
-  }
-  return h;
+  return fnv1a64({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 
 void put_text(ByteWriter& out, const std::string& text) { out.array(std::vector<char>(text.begin(), text.end())); }
