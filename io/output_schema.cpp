@@ -77,11 +77,12 @@ std::function<Value(const RunOutput&, std::size_t)> member_of(const Part* (*part
 
 std::vector<OutputRecord> declare() {
   std::vector<OutputRecord> r;
-  auto add = [&](std::string path, RecordKind kind, bool summary, std::string units, std::string meaning,
+  auto add = [&](std::string path, RecordKind kind, InSummary summary, std::string units, std::string meaning,
                  std::function<Value(const RunOutput&, std::size_t)> value) {
     r.push_back({std::move(path), kind, summary, std::move(units), std::move(meaning), std::move(value)});
   };
-  const bool S = true, H = false;  // in the summary too, or in the HDF5 file only
+  // In the summary too, in the HDF5 file only, or in the summary at its sample times only.
+  const InSummary S = InSummary::yes, H = InSummary::no, ST = InSummary::sample_times;
 
   // The run as a whole.
   add("format_version", K::text, S, "", "version of this format, major.minor (docs/output-format.md)",
@@ -154,14 +155,21 @@ std::vector<OutputRecord> declare() {
         if (!o.report.energy_residual) return {};
         return *o.report.energy_residual;
       });
-  add("times", K::numbers, S, "time", "sample times t_k",
+  add("times", K::numbers, ST, "time", "sample times t_k",
       [](const RunOutput& o, std::size_t) { return o.result.times; });
+  add("summary_stride", K::count, S, "",
+      "the JSON summary's records over the sample times hold every summary_stride-th sample time from the first, "
+      "and the last: at most " +
+          std::to_string(summary_sample_times_max) + " (1 when the run has no more); the HDF5 file holds every one",
+      [](const RunOutput& o, std::size_t) {
+        return static_cast<std::uint64_t>(summary_stride(o.result.times.size()));
+      });
 
   // Series over the sample times, with their rows per replica.
   auto series_with_rows = [&](const std::string& path, const std::string& units, const std::string& what,
                               std::function<const MeanCISeries*(const RunOutput&)> stats,
                               std::function<const std::vector<double>&(const ReplicaSeries&)> pick) {
-    add(path, K::series, S, units, what + " at the sample times; " + ci_text,
+    add(path, K::series, ST, units, what + " at the sample times; " + ci_text,
         [stats](const RunOutput& o, std::size_t) -> Value {
           const MeanCISeries* s = stats(o);
           if (s == nullptr) return {};
@@ -181,7 +189,7 @@ std::vector<OutputRecord> declare() {
       "log_temperature", "", "ln T of the mixture temperature (finite where T underflows)",
       [](const RunOutput& o) { return &o.report.log_temperature; },
       [](const ReplicaSeries& s) -> const auto& { return s.log_temperature; });
-  add("temperature_uncentred", K::series, S, "energy",
+  add("temperature_uncentred", K::series, ST, "energy",
       "the mixture temperature without removing the bulk velocity, T + (sum_i x_i m_i) |V|^2 / 3 with V = P / M "
       "(momentum/replicas): 001's T = (1/3) int |v|^2 f (eq. 35), which the paper evaluates on a sample whose "
       "mean is not removed (step 1.2; initial.zero_momentum = false), at the sample times (gas); " +
@@ -240,7 +248,7 @@ std::vector<OutputRecord> declare() {
   });
   auto species_series = [&](const std::string& leaf, const std::string& units, const std::string& what,
                             MeanCISeries SpeciesReport::*stats, std::vector<double> SpeciesSeries::*member) {
-    add("species/{species}/" + leaf, K::series, S, units, what + " at the sample times; " + ci_text,
+    add("species/{species}/" + leaf, K::series, ST, units, what + " at the sample times; " + ci_text,
         [stats](const RunOutput& o, std::size_t i) { return o.report.species[i].*stats; });
     add("species/{species}/" + leaf + "/replicas", K::rows, H, units,
         what + " of each replica (rows) at each sample time (columns)", [member](const RunOutput& o, std::size_t i) {
@@ -549,7 +557,7 @@ std::vector<OutputRecord> declare() {
         return std::vector<double>{viscosity(o)->reduced_shear_rate_min, viscosity(o)->reduced_shear_rate_max};
       });
   auto shear_series = [&](const std::string& leaf, const std::string& what, MeanCISeries ViscosityReport::*member) {
-    add("viscosity/" + leaf, K::series, S, "", what + " at the sample times; " + ci_text,
+    add("viscosity/" + leaf, K::series, ST, "", what + " at the sample times; " + ci_text,
         [member](const RunOutput& o, std::size_t) -> Value {
           if (!viscosity(o)) return {};
           return viscosity(o)->*member;
@@ -605,7 +613,7 @@ std::vector<OutputRecord> declare() {
   prediction("cooling_rate_model_error", "", "relative model error of zeta0 (docs/physics.md)",
              &Prediction::cooling_rate_model_error);
   prediction("collision_frequency0", "1/time", "collision frequency at t = 0", &Prediction::collision_frequency0);
-  add("theory/haff_temperature", K::numbers, S, "energy",
+  add("theory/haff_temperature", K::numbers, ST, "energy",
       "Haff's law T(t) = T0 / (1 + zeta0 t / 2)^2 at the sample times, zeta0 = cooling_rate0",
       [](const RunOutput& o, std::size_t) -> Value {
         if (!o.report.theory) return {};
@@ -640,7 +648,33 @@ const char* kind_name(RecordKind kind) {
   return "";
 }
 
+const char* summary_column(InSummary in) {
+  switch (in) {
+    case InSummary::no:
+      return "";
+    case InSummary::yes:
+      return "yes";
+    case InSummary::sample_times:
+      return "sampled";
+  }
+  return "";
+}
+
 }  // namespace
+
+std::size_t summary_stride(std::size_t sample_times) {
+  const std::size_t intervals = sample_times > 0 ? sample_times - 1 : 0;
+  const std::size_t kept = summary_sample_times_max - 1;
+  return std::max<std::size_t>(1, (intervals + kept - 1) / kept);
+}
+
+std::vector<std::size_t> summary_sample_indices(std::size_t sample_times) {
+  std::vector<std::size_t> out;
+  const std::size_t stride = summary_stride(sample_times);
+  for (std::size_t k = 0; k < sample_times; k += stride) out.push_back(k);
+  if (sample_times > 0 && out.back() != sample_times - 1) out.push_back(sample_times - 1);
+  return out;
+}
 
 std::string output_format_version() {
   return std::to_string(output_format_major) + "." + std::to_string(output_format_minor);
@@ -678,19 +712,24 @@ std::string output_format_page() {
       "Generated by `granmc output-format` from io/output_schema.cpp, the one declaration of every record; "
       "`make output-format-page` rewrites this page and the test suite checks that it is current.\n\n"
       "`granmc run SCENE --out FILE.h5 --summary FILE.json` writes every record below that the run has to the "
-      "HDF5 file, and those marked *summary* also to the JSON summary, under the same name: a path `a/b` is the "
+      "HDF5 file, and those marked *yes* under *summary* also to the JSON summary, under the same name: a path `a/b` "
+      "is the "
       "HDF5 object `/a/b` and the JSON key `[\"a\"][\"b\"]`; `{species}` stands for each species in turn (the "
       "group `/species/<name>/` in HDF5, the entry of the array `species` in JSON). In HDF5, text, numbers, "
       "counts and flags are attributes of their parent group (the root for a top-level record), a `mean, ci` "
       "record is a group with the attributes `mean` and `ci`, a series is a group with the datasets `mean` and "
       "`ci`, and rows are datasets with one row per replica (R replicas, S sample times, K shells). Every "
       "dataset and group carries a `description` attribute with the meaning below. JSON has no NaN: a number "
-      "that is not finite is `null`.\n\n"
+      "that is not finite is `null`. A record marked *sampled* is over the sample times: the summary holds it at "
+      "no more than " +
+      std::to_string(summary_sample_times_max) +
+      " of them (every `summary_stride`-th from the first, and the last), so that the summary of a long run "
+      "stays small; the HDF5 file holds every sample time.\n\n"
       "The major version changes when a record is renamed, moved or given another meaning, and readers refuse a "
       "major version they do not know; a minor version only adds records. Units: " +
       std::string(units_text) + ".\n\n| record | kind | summary | units | meaning |\n|---|---|---|---|---|\n";
   for (const OutputRecord& r : output_records()) {
-    page += "| `" + r.path + "` | " + kind_name(r.kind) + " | " + (r.summary ? "yes" : "") + " | " + r.units + " | " +
+    page += "| `" + r.path + "` | " + kind_name(r.kind) + " | " + summary_column(r.summary) + " | " + r.units + " | " +
             r.meaning + " |\n";
   }
   return page;

@@ -32,11 +32,28 @@ namespace granmc {
 /// The format of the files: a reader refuses a major version it does not know (a record renamed, moved
 /// or given another meaning); a minor version adds records only.
 inline constexpr int output_format_major = 2;
-inline constexpr int output_format_minor = 4;
-/// "2.4": the format_version attribute of every HDF5 file and key of every summary.
+inline constexpr int output_format_minor = 5;
+/// "2.5": the format_version attribute of every HDF5 file and key of every summary.
 std::string output_format_version();
 
 enum class RecordKind { text, number, count, flag, numbers, mean_ci, series, rows, count_rows, group };
+
+/// Whether a record is also in the JSON summary, and how much of it.
+enum class InSummary {
+  no,           // the HDF5 file only (rows and groups always)
+  yes,          // the whole record
+  sample_times  // a record over the sample times: its values at the summary's sample times only
+};
+
+/// The summary holds a record over the sample times at no more than this many of them; the HDF5 file holds
+/// every one. A long run's summary stays a summary (the 1D intruder's 2 10^5 samples were 24 MB of JSON).
+inline constexpr std::size_t summary_sample_times_max = 101;
+
+/// The indices of the sample times the summary holds, out of `sample_times`: every k-th from the first,
+/// k = summary_stride(sample_times), and the last.
+std::vector<std::size_t> summary_sample_indices(std::size_t sample_times);
+/// k = ceil((K - 1) / (summary_sample_times_max - 1)) for K sample times, at least 1.
+std::size_t summary_stride(std::size_t sample_times);
 
 /// Values one per replica (rows), with the shape [R x ...] of the dataset.
 template <class T>
@@ -58,7 +75,7 @@ struct RunOutput {
 struct OutputRecord {
   std::string path;
   RecordKind kind;
-  bool summary;         // also in the JSON summary (rows and groups never are)
+  InSummary summary;
   std::string units;    // "" for dimensionless or not applicable
   std::string meaning;  // one line; the HDF5 description attribute of a dataset or group
   /// The value for species `i` (ignored without "{species}" in the path), or nothing when the run has no such

@@ -4,6 +4,10 @@
 // names SCENES.md fixes ("Summary": scene, seed, replicas, method, wall_seconds, collisions, times,
 // temperature, species [{name, temperature, a2}], temperature_ratio, viscosity, intruder) are among them.
 //
+// A record over the sample times (times, temperature, the species' series, ...) is in the summary at no more
+// than summary_sample_times_max of them (io/output_schema.hpp: every summary_stride-th and the last); the
+// HDF5 file holds them all. Arrays of numbers are written on one line.
+//
 // JSON has no NaN or infinity: every non-finite number is written as null (e.g. a2 of a replica set whose
 // temperature underflowed), so the file always parses; readers treat null as "not a number".
 #include <string>

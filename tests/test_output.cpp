@@ -376,10 +376,67 @@ TEST(Output, SummaryWritesNonFiniteAsNull) {
   std::ifstream in(path);
   const nlohmann::json back = nlohmann::json::parse(in);  // throws if the file is not valid JSON
   EXPECT_TRUE(back["species"][0]["a2"]["mean"][2].is_null());
-  EXPECT_EQ(back["times"], j["times"]);
+  EXPECT_EQ(back, j);
 
   EXPECT_THROW(write_summary("/nonexistent-dir/s.json", j), std::runtime_error);
   EXPECT_FALSE(fs::exists("/nonexistent-dir"));
+}
+
+TEST(Output, SummarySampleIndicesAreEveryStrideThAndTheLast) {
+  EXPECT_TRUE(summary_sample_indices(0).empty());
+  EXPECT_EQ(summary_sample_indices(1), std::vector<std::size_t>{0});
+  for (std::size_t k : {std::size_t{2}, std::size_t{101}, std::size_t{102}, std::size_t{1502}, std::size_t{200001}}) {
+    const std::vector<std::size_t> at = summary_sample_indices(k);
+    const std::size_t stride = summary_stride(k);
+    ASSERT_LE(at.size(), summary_sample_times_max) << k;
+    EXPECT_EQ(stride, k <= summary_sample_times_max ? 1u : (k - 1 + 99) / 100) << k;
+    EXPECT_EQ(at.front(), 0u);
+    EXPECT_EQ(at.back(), k - 1) << k;
+    for (std::size_t n = 1; n + 1 < at.size(); ++n) EXPECT_EQ(at[n], n * stride) << k;
+    EXPECT_GT(at.back(), at[at.size() - 2]);
+    EXPECT_LE(at.back() - at[at.size() - 2], stride);
+  }
+  EXPECT_EQ(summary_sample_indices(200001).size(), 101u);  // 0, 2000, ..., 200000
+  EXPECT_EQ(summary_sample_indices(1502).size(), 95u);     // 0, 16, ..., 1488 and 1501
+}
+
+/// A long run's summary holds its records over the sample times at every summary_stride-th sample time and
+/// the last: the values there are the report's, and the file stays small.
+TEST(Output, SummaryHoldsALongRunAtItsSampleTimes) {
+  const TempDir dir;
+  const Scene scene = one_species_scene();
+  constexpr std::size_t sample_times = 1502;
+  RunResult r;
+  r.species_names = {"a"};
+  for (std::size_t k = 0; k < sample_times; ++k) r.times.push_back(0.5 * static_cast<double>(k));
+  for (double slope : {0.01, 0.02}) {
+    std::vector<double> temperature, a2, collisions;
+    for (std::size_t k = 0; k < sample_times; ++k) {
+      temperature.push_back(1.0 / (1.0 + slope * r.times[k]));
+      a2.push_back(slope * std::sin(static_cast<double>(k)));
+      collisions.push_back(10.0 * static_cast<double>(k));
+    }
+    r.replicas.push_back(replica(species_series(temperature, a2), collisions, 100));
+  }
+  const RunReport report = make_run_report(scene, r, 0.0);
+  const nlohmann::json j = summary_json(scene, r, report);
+  const std::vector<std::size_t> at = summary_sample_indices(sample_times);
+  EXPECT_EQ(j["summary_stride"].get<std::size_t>(), 16u);
+  ASSERT_EQ(j["times"].size(), at.size());
+  ASSERT_EQ(j["species"][0]["a2"]["ci"].size(), at.size());
+  ASSERT_EQ(j["theory"]["haff_temperature"].size(), at.size());
+  for (std::size_t n = 0; n < at.size(); ++n) {
+    EXPECT_EQ(j["times"][n].get<double>(), r.times[at[n]]);
+    EXPECT_EQ(j["temperature"]["mean"][n].get<double>(), report.temperature.mean[at[n]]);
+    EXPECT_EQ(j["species"][0]["a2"]["ci"][n].get<double>(), report.species[0].a2.ci[at[n]]);
+    EXPECT_EQ(j["theory"]["haff_temperature"][n].get<double>(), report.theory->temperature[at[n]]);
+  }
+  // The records that are not over the sample times are whole.
+  EXPECT_EQ(j["species"][0]["a2_last_half"]["mean"].get<double>(), report.species[0].a2_last_half.mean);
+
+  const std::string path = (dir.path / "summary.json").string();
+  write_summary(path, j);
+  EXPECT_LT(fs::file_size(path), 100'000u);
 }
 
 }  // namespace

@@ -51,7 +51,7 @@ class OutputFormat : public granmc_test::GranmcDirectory {
                                        : H5Lexists(file, h5.c_str(), H5P_DEFAULT) > 0;
         const bool in_json = summary.contains(nlohmann::json::json_pointer(json_path));
         if (r.kind == RecordKind::group) {  // in JSON only as the parent object of its records
-        } else if (r.summary) {
+        } else if (r.summary != InSummary::no) {
           EXPECT_EQ(in_json, in_hdf5) << r.path;
         } else {
           EXPECT_FALSE(in_json) << r.path;
