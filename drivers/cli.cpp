@@ -147,31 +147,36 @@ int run_command(const RunArgs& args) {
   const std::string out = args.out.empty() ? default_output(args.scene) : args.out;
 
   const Place at = place();
-  // Checkpoints in one process only (drivers/run_checkpoints.hpp). An earlier run's checkpoint beside the output
-  // is never overwritten unasked: it is resumed (--resume) or deleted by the user.
-  const bool one_process = at.size == 1 && loaded->plan.spread != Spread::particles;
-  const CheckpointSettings settings{one_process && !args.no_checkpoints,
+  // Checkpoints (drivers/run_checkpoints.hpp), on every rank for its own replicas; none for one replica spread
+  // over the ranks. An earlier run's checkpoint beside the output is never overwritten unasked: it is resumed
+  // (--resume) or deleted by the user. Every rank decides alike (all_ranks_ok), so none waits alone.
+  const bool checkpointable = loaded->plan.spread != Spread::particles;
+  const CheckpointSettings settings{checkpointable && !args.no_checkpoints,
                                     args.checkpoint_every.value_or(scene.run.checkpoint_every), args.resume};
   std::optional<RunCheckpoints> checkpoints;
-  if (!all_ranks_ok(args.resume.empty() || one_process,
-                    "granmc: --resume: a checkpoint is resumed in one process, not under MPI\n"))
+  if (!all_ranks_ok(args.resume.empty() || checkpointable,
+                    "granmc: --resume: a run with one replica spread over the ranks (run.spread = \"particles\") "
+                    "has no checkpoints\n"))
     return exit_bad_input;
-  if (one_process) {
+  if (checkpointable) {
     const std::string earlier = checkpoint_path(out);
-    if (settings.enabled && args.resume.empty() && std::filesystem::exists(earlier)) {
-      std::cerr << "granmc: " << earlier << " is the checkpoint of an earlier run of this output: continue it with "
-                << "--resume " << earlier << ", or delete it to start afresh\n";
+    if (!all_ranks_ok(!(settings.enabled && args.resume.empty() && !checkpoint_files(earlier).empty()),
+                      "granmc: " + earlier +
+                          " is the checkpoint of an earlier run of this output: continue it with "
+                          "--resume " +
+                          earlier + ", or delete it (and " + earlier + ".K-of-R) to start afresh\n"))
       return exit_bad_input;
-    }
+    std::string refusal;
     try {
-      checkpoints.emplace(scene, out, settings);
+      checkpoints.emplace(scene, out, settings, at.rank, at.size);
     } catch (const CheckpointError& e) {
-      std::cerr << "granmc: " << e.what() << "\n";
-      return exit_bad_input;
+      refusal = "granmc: " + std::string(e.what()) + "\n";
     }
-    if (checkpoints->restored() + checkpoints->restored_in_flight() > 0 && !args.quiet)
+    if (!all_ranks_ok(refusal.empty(), refusal)) return exit_bad_input;
+    if (checkpoints->restored_all() + checkpoints->restored_in_flight_all() > 0 && !args.quiet && at.rank == 0)
       std::printf("granmc: %zu of %d replicas from %s, %zu more going on from where they stopped\n",
-                  checkpoints->restored(), scene.run.replicas, args.resume.c_str(), checkpoints->restored_in_flight());
+                  checkpoints->restored_all(), scene.run.replicas, args.resume.c_str(),
+                  checkpoints->restored_in_flight_all());
   }
   try {
     const JobResult done = run_job(scene, loaded->plan, {out, args.summary}, args.threads, args.quiet,
@@ -190,10 +195,17 @@ int run_command(const RunArgs& args) {
   } catch (const RunInterrupted&) {
     try {
       const std::string& file = checkpoints->write_now();
-      std::cerr << "granmc: interrupted; " << checkpoints->finished() << " of " << scene.run.replicas
-                << " replicas finished and " << checkpoints->in_flight() << " stopped at a sample time are kept in "
-                << file << "; continue with: granmc run " << args.scene << " --resume " << file
-                << " (and the same --out, --summary and --seed)\n";
+      if (at.size == 1)
+        std::cerr << "granmc: interrupted; " << checkpoints->finished() << " of " << scene.run.replicas
+                  << " replicas finished and " << checkpoints->in_flight() << " stopped at a sample time are kept in "
+                  << file << "; continue with: granmc run " << args.scene << " --resume " << file
+                  << " (and the same --out, --summary and --seed)\n";
+      else if (at.rank == 0)
+        std::cerr << "granmc: interrupted; each rank keeps its finished replicas and those stopped at a sample time "
+                     "in "
+                  << checkpoint_path(out) << ".K-of-" << at.size
+                  << "; continue on any number of ranks with: granmc run " << args.scene << " --resume "
+                  << checkpoint_path(out) << " (and the same --out, --summary and --seed)\n";
     } catch (const std::exception& e) {
       std::cerr << "granmc: interrupted, and " << e.what() << "\n";
     }

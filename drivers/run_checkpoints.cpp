@@ -1,9 +1,11 @@
 #include "drivers/run_checkpoints.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <regex>
 #include <stdexcept>
 #include <utility>
 
@@ -26,9 +28,33 @@ extern "C" void on_stop_signal(int signal) {
 
 std::string checkpoint_path(const std::string& hdf5) { return hdf5 + ".checkpoint"; }
 
-RunCheckpoints::RunCheckpoints(const Scene& scene, const std::string& hdf5, const CheckpointSettings& settings)
+std::string checkpoint_file(const std::string& base, int rank, int ranks) {
+  if (ranks == 1) return base;
+  return base + "." + std::to_string(rank) + "-of-" + std::to_string(ranks);
+}
+
+std::vector<std::string> checkpoint_files(const std::string& path) {
+  static const std::regex rank_file(R"((.*)\.[0-9]+-of-[0-9]+)");
+  std::smatch m;
+  const std::string base = std::regex_match(path, m, rank_file) ? m[1].str() : path;
+  const std::filesystem::path dir = std::filesystem::path(base).parent_path();
+  const std::string name = std::filesystem::path(base).filename().string();
+  std::vector<std::string> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.empty() ? "." : dir, error)) {
+    const std::string file = entry.path().filename().string();
+    if (file == name || (std::regex_match(file, m, rank_file) && m[1].str() == name))
+      files.push_back((dir / file).string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+RunCheckpoints::RunCheckpoints(const Scene& scene, const std::string& hdf5, const CheckpointSettings& settings,
+                               int rank, int ranks)
     : settings_(settings),
-      path_(checkpoint_path(hdf5)),
+      base_(checkpoint_path(hdf5)),
+      path_(checkpoint_file(base_, rank, ranks)),
       started_(std::chrono::steady_clock::now()),
       last_write_(started_) {
   checkpoint_.build = build_id();
@@ -36,12 +62,21 @@ RunCheckpoints::RunCheckpoints(const Scene& scene, const std::string& hdf5, cons
   checkpoint_.seed = scene.run.seed;
   checkpoint_.replicas = static_cast<std::uint64_t>(scene.run.replicas);
   if (!settings_.resume.empty()) {
-    Checkpoint earlier = read_checkpoint(settings_.resume);
-    const std::string why =
-        checkpoint_mismatch(earlier, checkpoint_.build, checkpoint_.scene_text, checkpoint_.seed, checkpoint_.replicas);
-    if (!why.empty()) throw CheckpointError("cannot resume from '" + settings_.resume + "': " + why);
-    checkpoint_.finished = std::move(earlier.finished);
-    checkpoint_.in_flight = std::move(earlier.in_flight);
+    const std::vector<std::string> files = checkpoint_files(settings_.resume);
+    if (files.empty()) read_checkpoint(settings_.resume);  // throws: the file is missing
+    for (const std::string& file : files) {
+      Checkpoint earlier = read_checkpoint(file);
+      const std::string why = checkpoint_mismatch(earlier, checkpoint_.build, checkpoint_.scene_text, checkpoint_.seed,
+                                                  checkpoint_.replicas);
+      if (!why.empty()) throw CheckpointError("cannot resume from '" + file + "': " + why);
+      merge_checkpoint(checkpoint_, std::move(earlier));
+    }
+    restored_all_ = checkpoint_.finished.size();
+    restored_in_flight_all_ = checkpoint_.in_flight.size();
+    // This rank keeps its own replicas (RunOptions offset = rank, stride = ranks), and writes only those.
+    const auto others = [&](const auto& entry) { return static_cast<int>(entry.first % ranks) != rank; };
+    std::erase_if(checkpoint_.finished, others);
+    std::erase_if(checkpoint_.in_flight, others);
     restored_ = checkpoint_.finished.size();
     restored_in_flight_ = checkpoint_.in_flight.size();
   }
@@ -111,12 +146,22 @@ void RunCheckpoints::write_locked() {
 
 void RunCheckpoints::write_if_due_locked() {
   if (minutes_since(last_write_) < settings_.every_minutes || stop_requested.load()) return;
+  write_or_report_locked();
+}
+
+void RunCheckpoints::write_or_report_locked() noexcept {
   try {
     write_locked();
-  } catch (const std::runtime_error& e) {  // e.g. a full disk: the run goes on, the previous checkpoint stays
+  } catch (const std::exception& e) {  // e.g. a full disk: the run goes on, the previous checkpoint stays
     std::cerr << "granmc: " << e.what() << "; the run goes on\n";
     last_write_ = std::chrono::steady_clock::now();  // the next attempt after another interval
   }
+}
+
+void RunCheckpoints::write_before_waiting() {
+  if (!settings_.enabled) return;
+  const std::lock_guard lock(mutex_);
+  write_or_report_locked();
 }
 
 double RunCheckpoints::minutes_since(std::chrono::steady_clock::time_point t) {
@@ -125,7 +170,7 @@ double RunCheckpoints::minutes_since(std::chrono::steady_clock::time_point t) {
 
 void RunCheckpoints::run_completed() {
   std::error_code ignored;
-  std::filesystem::remove(path_, ignored);
+  for (const std::string& file : checkpoint_files(base_)) std::filesystem::remove(file, ignored);
 }
 
 std::size_t RunCheckpoints::finished() const {

@@ -90,8 +90,13 @@ JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& out
   if (checkpoints != nullptr) checkpoints->attach(options);
 
   const auto start = std::chrono::steady_clock::now();
-  // Spread over the ranks, every rank holds every replica's series; otherwise rank 0 gathers them.
-  RunResult result = spread_particles ? run_plan(plan, scene, options) : completed(run_plan(plan, scene, options));
+  // Spread over the ranks, every rank holds every replica's series; otherwise rank 0 gathers them, after each
+  // rank has kept its replicas in its checkpoint (a run ended while ranks wait loses none of them).
+  RunResult result = run_plan(plan, scene, options);
+  if (!spread_particles) {
+    if (checkpoints != nullptr && at.size > 1) checkpoints->write_before_waiting();
+    result = completed(std::move(result));
+  }
   result.ranks = at.size;
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -104,6 +104,21 @@ Checkpoint read_checkpoint(const std::string& path) {
   }
 }
 
+void merge_checkpoint(Checkpoint& into, Checkpoint&& other) {
+  for (auto& [r, series] : other.finished) {
+    into.in_flight.erase(r);
+    into.finished.try_emplace(r, std::move(series));
+  }
+  for (auto& [r, state] : other.in_flight) {
+    if (into.finished.contains(r)) continue;
+    const auto at = into.in_flight.find(r);
+    if (at == into.in_flight.end())
+      into.in_flight.emplace(r, std::move(state));
+    else if (state.samples_taken > at->second.samples_taken)
+      at->second = std::move(state);
+  }
+}
+
 std::string checkpoint_mismatch(const Checkpoint& checkpoint, const std::string& build, const std::string& scene_text,
                                 std::uint64_t seed, std::uint64_t replicas) {
   if (checkpoint.build != build)

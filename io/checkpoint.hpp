@@ -45,6 +45,11 @@ void write_checkpoint(const std::string& path, const Checkpoint& checkpoint);
 /// version or byte order, truncated or corrupt (checksum).
 Checkpoint read_checkpoint(const std::string& path);
 
+/// Adds to `into` what `other` (a checkpoint of the same run, e.g. another MPI rank's) holds: its finished
+/// replicas, and its replicas in flight that `into` has neither finished nor taken further (more samples).
+/// So checkpoint files of one run merge in any order to the furthest state of each replica.
+void merge_checkpoint(Checkpoint& into, Checkpoint&& other);
+
 /// Why `checkpoint` cannot resume the run of this build with this scene text, seed and replicas ("" if it can).
 std::string checkpoint_mismatch(const Checkpoint& checkpoint, const std::string& build, const std::string& scene_text,
                                 std::uint64_t seed, std::uint64_t replicas);

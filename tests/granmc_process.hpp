@@ -67,13 +67,15 @@ class GranmcDirectory : public ::testing::Test {
     return o;
   }
 
-  /// Starts `granmc args` in the test directory in the background (stdout to out.txt, stderr to err.txt);
-  /// returns its process id. Its exit status goes to rc.txt (wait_exit).
-  pid_t start(const std::string& args) const {
+  /// Starts `launcher granmc args` in the test directory in the background (stdout to out.txt, stderr to
+  /// err.txt); returns the process id of the launcher (of granmc without one). Its exit status goes to rc.txt
+  /// (wait_exit).
+  pid_t start(const std::string& args, const std::string& launcher = "") const {
     fs::remove(dir_ / "pid.txt");
     fs::remove(dir_ / "rc.txt");
-    const std::string cmd = "cd '" + dir_.string() + "' && sh -c '\"" GRANMC_EXECUTABLE "\" " + args +
-                            " >out.txt 2>err.txt & echo $! > pid.txt; wait $!; echo $? > rc.txt' &";
+    write("start.sh", launcher + " '" GRANMC_EXECUTABLE "' " + args +
+                          " >out.txt 2>err.txt & echo $! > pid.txt; wait $!; echo $? > rc.txt\n");
+    const std::string cmd = "cd '" + dir_.string() + "' && sh start.sh &";
     EXPECT_EQ(std::system(cmd.c_str()), 0);
     for (int k = 0; k < 1000 && slurp(dir_ / "pid.txt").empty(); ++k) sleep_ms(5);
     return static_cast<pid_t>(std::stol(slurp(dir_ / "pid.txt")));

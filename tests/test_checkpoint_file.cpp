@@ -77,6 +77,31 @@ TEST(CheckpointFile, RoundTripKeepsTheIdentityAndEveryReplica) {
   fs::remove(path);
 }
 
+/// The files of the ranks of one run, merged in either order: each replica at its furthest state.
+TEST(CheckpointFile, MergeKeepsEachReplicaAtItsFurthestState) {
+  const Checkpoint base = small_checkpoint();  // 0 and 2 finished, 1 in flight at sample 2
+  Checkpoint further;                          // 1 further on, 2 in flight (stale: finished in `base`)
+  further.in_flight.emplace(1, base.in_flight.at(1));
+  further.in_flight.at(1).samples_taken = 3;
+  further.in_flight.emplace(2, base.in_flight.at(1));
+  Checkpoint done;  // 1 finished
+  done.finished.emplace(1, base.finished.at(0));
+  for (const bool base_first : {true, false}) {
+    Checkpoint a = base_first ? base : further, b = base_first ? further : base;
+    merge_checkpoint(a, std::move(b));
+    EXPECT_EQ(a.finished.size(), 2u);
+    ASSERT_EQ(a.in_flight.size(), 1u);
+    EXPECT_EQ(a.in_flight.at(1).samples_taken, 3u) << base_first;
+    merge_checkpoint(a, Checkpoint(done));
+    EXPECT_EQ(a.finished.size(), 3u);
+    EXPECT_TRUE(a.in_flight.empty());
+    Checkpoint c = done;
+    merge_checkpoint(c, Checkpoint(further));
+    EXPECT_EQ(c.in_flight.size(), 1u);  // 2 in flight; 1 stays finished
+    EXPECT_TRUE(c.in_flight.contains(2));
+  }
+}
+
 TEST(CheckpointFile, BadFilesAreRefusedSayingWhy) {
   const fs::path path = fs::path(::testing::TempDir()) / "granmc_checkpoint_bad";
   write_checkpoint(path.string(), small_checkpoint());

@@ -5,6 +5,7 @@
 // ranks, and one message from a bad scene. The test launches mpirun itself; CTest sets
 // OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) for it (tests/CMakeLists.txt), as OpenMPI refuses root without them.
 #include <hdf5.h>
+#include <signal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -386,6 +387,59 @@ TEST_F(MpiRun, BadSceneStopsEveryRankWithOneMessage) {
   EXPECT_EQ(o.stderr_text.find(first_line, first_line.size()), std::string::npos) << "printed twice:\n"
                                                                                   << o.stderr_text;
   EXPECT_EQ(files(), std::vector<std::string>{"scene.toml"});
+}
+
+/// Checkpoints over ranks (drivers/run_checkpoints.hpp): a run on 2 ranks stopped by SIGINT to mpirun keeps
+/// each rank's replicas in its own file; resumed on 3 ranks it is stopped again; resumed in one process it
+/// writes the files of the uninterrupted run. 5 replicas of about a second each: on 2 ranks rank 1 has 2 to
+/// rank 0's 3 and may wait for rank 0, its replicas kept in its file.
+TEST_F(MpiRun, CheckpointsResumeOnAnyNumberOfRanks) {
+  write("s.toml", R"([run]
+seed = 5
+replicas = 5
+t_end = 40.0
+dt = 0.01
+samples = 40
+[[species]]
+particles = 200000
+[collision]
+restitution = 0.8
+)");
+  const Outcome full = granmc("run s.toml --out full.h5 --summary full.json --quiet --threads 1");
+  ASSERT_EQ(full.status, 0) << full.stderr_text;
+  const auto interrupt = [&](const std::string& resume, int ranks) {
+    const pid_t pid =
+        start("run s.toml --out p.h5 --summary p.json --threads 1 --checkpoint-every 0" + resume, mpirun(ranks));
+    const std::string last = "p.h5.checkpoint." + std::to_string(ranks - 1) + "-of-" + std::to_string(ranks);
+    for (int k = 0; k < 6000 && !exists(last) && slurp(dir_ / "rc.txt").empty(); ++k) sleep_ms(5);
+    sleep_ms(300);
+    ::kill(pid, SIGINT);  // mpirun sends SIGTERM to every rank
+    return wait_exit();
+  };
+  if (interrupt("", 2) == 0) GTEST_SKIP() << "the run ended before the signal";
+  EXPECT_NE(slurp(dir_ / "err.txt").find("--resume p.h5.checkpoint"), std::string::npos) << slurp(dir_ / "err.txt");
+  EXPECT_TRUE(exists("p.h5.checkpoint.0-of-2"));
+  EXPECT_TRUE(exists("p.h5.checkpoint.1-of-2"));
+  EXPECT_FALSE(exists("p.h5"));
+
+  // A plain rerun on any rank count does not overwrite them.
+  const Outcome again = granmc("run s.toml --out p.h5 --summary p.json", mpirun(3));
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.stderr_text.find("--resume p.h5.checkpoint"), std::string::npos) << again.stderr_text;
+
+  if (interrupt(" --resume p.h5.checkpoint", 3) == 0) GTEST_SKIP() << "the resumed run ended before the signal";
+  EXPECT_TRUE(exists("p.h5.checkpoint.2-of-3"));
+  const Outcome resumed = granmc("run s.toml --out p.h5 --summary p.json --threads 2 --resume p.h5.checkpoint");
+  ASSERT_EQ(resumed.status, 0) << resumed.stderr_text;
+  for (const std::string& name : files()) EXPECT_EQ(name.find("p.h5.checkpoint"), std::string::npos) << name;
+  EXPECT_EQ(summary("p"), summary("full"));
+  const auto reference = read_h5((dir_ / "full.h5").string()), other = read_h5((dir_ / "p.h5").string());
+  EXPECT_EQ(other.size(), reference.size());
+  for (const auto& [name, bytes] : reference) {
+    const auto it = other.find(name);
+    ASSERT_NE(it, other.end()) << name;
+    EXPECT_TRUE(it->second == bytes) << name << " differs";
+  }
 }
 
 TEST_F(MpiRun, TheoryAndExplainPrintOnce) {
