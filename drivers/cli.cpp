@@ -302,7 +302,7 @@ int cli_main(int argc, char** argv) {
                       "lacks run, and the files are those of an uninterrupted run (docs/scenes.md, \"Checkpoints\")");
   run_cmd
       ->add_option("--checkpoint-every", run.checkpoint_every,
-                   "Minutes between checkpoints (OUT.checkpoint: the finished replicas, and the time-stepped ones in "
+                   "Minutes between checkpoints (OUT.checkpoint: the finished replicas, and the gas schemes' ones in "
                    "flight; 0: at every sample; "
                    "default: the scene's run.checkpoint_every, 10); one is also written on SIGINT or SIGTERM, and "
                    "the run stops with status 3")

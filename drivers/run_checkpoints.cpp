@@ -79,6 +79,7 @@ RunCheckpoints::RunCheckpoints(const Scene& scene, const std::string& hdf5, cons
     std::erase_if(checkpoint_.in_flight, others);
     restored_ = checkpoint_.finished.size();
     restored_in_flight_ = checkpoint_.in_flight.size();
+    for (const auto& [r, state] : checkpoint_.in_flight) restored_samples_ += state.samples_taken;
   }
   if (settings_.enabled) {
     stop_requested.store(false);

@@ -1,12 +1,12 @@
 #pragma once
 // Checkpoints of `granmc run` (docs/scenes.md, "Checkpoints"; io/checkpoint.hpp): the finished replicas, and
-// the time-stepped scheme's replicas in flight at a sample time, are written to OUT.checkpoint beside the HDF5
+// the gas schemes' replicas in flight at a sample time, are written to OUT.checkpoint beside the HDF5
 // output every `every_minutes` of wall-clock time (0: at every sample and every finished replica) and when
 // SIGINT or SIGTERM arrives; then the run ends (exit status 3) and says how to resume. `--resume FILE` goes on
 // with the replicas in flight, runs those the checkpoint lacks, and writes the files an uninterrupted run
-// writes, bit for bit. At the signal a replica in flight stops at its next sample time; the other schemes'
-// replicas lose their work there (they are kept whole only). A checkpoint that cannot be written (a full
-// disk) leaves the previous one as it was; the run says so on stderr and goes on.
+// writes, bit for bit. At the signal a replica in flight stops at its next sample time; the replicas of
+// weighted particles and of the intruder lose their work there (they are kept whole only). A checkpoint that cannot be
+// written (a full disk) leaves the previous one as it was; the run says so on stderr and goes on.
 //
 // Over MPI ranks (replicas on ranks, drivers/mpi_replicas.hpp) each rank keeps its own replicas in its own file,
 // OUT.checkpoint.K-of-R for rank K of R, written on its own clock and before it waits for the others at the
@@ -71,8 +71,10 @@ class RunCheckpoints {
   [[nodiscard]] std::size_t in_flight() const;
   /// Of this rank's replicas, those the resumed checkpoint had finished.
   [[nodiscard]] std::size_t restored() const noexcept { return restored_; }
-  /// Of this rank's replicas, those it had in flight (the time-stepped scheme goes on with them mid-run).
+  /// Of this rank's replicas, those it had in flight (they go on from the sample time they stopped at).
   [[nodiscard]] std::size_t restored_in_flight() const noexcept { return restored_in_flight_; }
+  /// The samples this rank's replicas in flight had taken.
+  [[nodiscard]] std::uint64_t restored_samples() const noexcept { return restored_samples_; }
   /// The same two over every rank's replicas.
   [[nodiscard]] std::size_t restored_all() const noexcept { return restored_all_; }
   [[nodiscard]] std::size_t restored_in_flight_all() const noexcept { return restored_in_flight_all_; }
@@ -88,6 +90,7 @@ class RunCheckpoints {
   mutable std::mutex mutex_;
   Checkpoint checkpoint_;
   std::size_t restored_ = 0, restored_in_flight_ = 0, restored_all_ = 0, restored_in_flight_all_ = 0;
+  std::uint64_t restored_samples_ = 0;
   std::chrono::steady_clock::time_point started_, last_write_;
   std::map<std::uint64_t, std::chrono::steady_clock::time_point> last_in_flight_;  // per replica in flight
 };

@@ -73,8 +73,10 @@ JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& out
                                            : isatty(STDERR_FILENO) ? ProgressLine::Mode::terminal
                                                                    : ProgressLine::Mode::log;
   const int replicas_here = spread_particles ? scene.run.replicas : own_replicas(scene.run.replicas, at);
+  // The samples left: those of the replicas the checkpoint lacks, less those its replicas in flight have taken.
   const int to_run = replicas_here - static_cast<int>(checkpoints != nullptr ? checkpoints->restored() : 0);
-  ProgressLine progress(static_cast<std::uint64_t>(to_run) * (scene.run.samples + 1), progress_mode);
+  const std::uint64_t taken = checkpoints != nullptr ? checkpoints->restored_samples() : 0;
+  ProgressLine progress(static_cast<std::uint64_t>(to_run) * (scene.run.samples + 1) - taken, progress_mode);
   RunOptions options;
   options.threads = threads;
   options.threads_per_replica = threads_per_replica;

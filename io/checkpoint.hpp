@@ -1,8 +1,8 @@
 #pragma once
 // A checkpoint of a run (`granmc run --checkpoint-every`, `--resume`; docs/scenes.md, "Checkpoints"): the
 // series of the replicas that have finished and the state of those stopped at a sample time (the
-// time-stepped scheme's, kernel/schemes/replica_in_flight.hpp), with what identifies the run they belong to
-// (the build, the scene text, the seed, the number of replicas). Each replica depends only on (seed, replica)
+// time-stepped and time-step-free schemes', kernel/schemes/replica_in_flight.hpp), with what identifies the run they
+// belong to (the build, the scene text, the seed, the number of replicas). Each replica depends only on (seed, replica)
 // (kernel/core/philox_stream.hpp), so a run resumed from it goes on with the replicas in flight, runs the
 // others and writes the files an uninterrupted run writes, bit for bit.
 //
@@ -20,7 +20,7 @@
 
 namespace granmc {
 
-inline constexpr std::uint32_t checkpoint_format_version = 2;
+inline constexpr std::uint32_t checkpoint_format_version = 3;
 
 struct Checkpoint {
   std::string build;       // io/build_id.hpp of the build that wrote it

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <variant>
 
 namespace granmc {
 
@@ -9,7 +10,7 @@ namespace {
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_trivially_copyable_v<Vec3>);
 static_assert(sizeof(SymTensor) == 6 * sizeof(double) && std::is_trivially_copyable_v<SymTensor>);
-static_assert(std::is_trivially_copyable_v<CollisionTally>);
+static_assert(std::is_trivially_copyable_v<CollisionTally> && std::is_trivially_copyable_v<EventTally>);
 // The fields of a replica in message order are kernel/observe/gas_series.hpp's one list (visit_replica_fields),
 // walked by Put (writes each field) and Get (reads into it), so writing and reading cannot disagree. Optionals
 // go as a flag byte and, for a record, its fields when present; the energy residual always sends its value (0
@@ -113,8 +114,10 @@ void write_in_flight(ByteWriter& out, const ReplicaInFlight& f) {
   write_replica(out, f.series);
   out.value(f.samples_taken);
   out.array(f.initial_majorant);
+  out.value(static_cast<std::uint8_t>(f.state.index()));  // the scheme: 0 time-stepped, 1 time-step-free
   Put put{out};
-  visit_snapshot_fields(f.dsmc, put);
+  if (const auto* dsmc = std::get_if<DsmcSnapshot>(&f.state)) visit_snapshot_fields(*dsmc, put);
+  if (const auto* event = std::get_if<EventSnapshot>(&f.state)) visit_event_snapshot_fields(*event, put);
 }
 
 ReplicaInFlight read_in_flight(ByteReader& in) {
@@ -123,7 +126,16 @@ ReplicaInFlight read_in_flight(ByteReader& in) {
   f.samples_taken = in.value<std::uint64_t>();
   f.initial_majorant = in.array<double>();
   Get get{in};
-  visit_snapshot_fields(f.dsmc, get);
+  switch (in.value<std::uint8_t>()) {
+    case 0:
+      visit_snapshot_fields(f.state.emplace<DsmcSnapshot>(), get);
+      break;
+    case 1:
+      visit_event_snapshot_fields(f.state.emplace<EventSnapshot>(), get);
+      break;
+    default:
+      throw std::runtime_error("replica bytes: bad scheme of a replica in flight");
+  }
   return f;
 }
 

@@ -165,31 +165,41 @@ TEST_F(Checkpoints, EverySchemeResumesToTheFilesOfAnUninterruptedRun) {
 }
 
 TEST_F(Checkpoints, OneReplicaStopsAtASampleAndGoesOn) {
-  // One large system (the time-stepped scheme): SIGINT keeps its state at its next sample time, and the
-  // resumed run goes on from there to the files of an uninterrupted run.
-  write("one.toml",
-        "[run]\nseed = 3\nreplicas = 1\nt_end = 20.0\ndt = 0.01\nsamples = 20\n[[species]]\n"
-        "particles = 400000\n[collision]\nrestitution = 0.8\n");
-  const Outcome full = granmc("run one.toml --out full.h5 --summary full.json --quiet");
-  ASSERT_EQ(full.status, 0) << full.stderr_text;
-  const pid_t pid = start("run one.toml --out part.h5 --summary part.json --checkpoint-every 0");
-  for (int k = 0; k < 6000 && !exists("part.h5.checkpoint") && slurp(dir_ / "rc.txt").empty(); ++k) sleep_ms(5);
-  ::kill(pid, SIGINT);
-  const int status = wait_exit();
-  if (status == 0) GTEST_SKIP() << "the run ended before the signal";
-  ASSERT_EQ(status, 3) << slurp(dir_ / "err.txt");
-  const Checkpoint left = read_checkpoint((dir_ / "part.h5.checkpoint").string());
-  EXPECT_EQ(left.finished.size(), 0u);
-  ASSERT_EQ(left.in_flight.size(), 1u);
-  const ReplicaInFlight& stopped = left.in_flight.at(0);
-  EXPECT_GE(stopped.samples_taken, 1u);
-  EXPECT_LT(stopped.samples_taken, 21u);
-  EXPECT_EQ(stopped.series.temperature.size(), stopped.samples_taken);
-  const Outcome resumed = granmc("run one.toml --out part.h5 --summary part.json --resume part.h5.checkpoint");
-  ASSERT_EQ(resumed.status, 0) << resumed.stderr_text;
-  EXPECT_NE(resumed.stdout_text.find("0 of 1 replicas from part.h5.checkpoint, 1 more going on"), std::string::npos)
-      << resumed.stdout_text;
-  EXPECT_EQ(numbers("part.json"), numbers("full.json"));
+  // One large system, time-stepped and time-step-free: SIGINT keeps its state at its next sample time, and
+  // the resumed run goes on from there to the files of an uninterrupted run.
+  std::string event = event_scene;  // one replica of 400 000 particles, about 2 s
+  event.replace(event.find("replicas = 8"), 12, "replicas = 1");
+  event.replace(event.find("particles = 100000"), 18, "particles = 400000");
+  event.replace(event.find("t_end = 8.0"), 11, "t_end = 16.0");
+  event.replace(event.find("samples = 4"), 11, "samples = 16");
+  const std::string dsmc =
+      "[run]\nseed = 3\nreplicas = 1\nt_end = 20.0\ndt = 0.01\nsamples = 20\n[[species]]\n"
+      "particles = 400000\n[collision]\nrestitution = 0.8\n";
+  for (const auto& [name, text] : {std::pair{"dsmc", dsmc}, std::pair{"event", event}}) {
+    SCOPED_TRACE(name);
+    const std::string n = name;
+    write(n + ".toml", text);
+    const Outcome full = granmc("run " + n + ".toml --out full.h5 --summary full.json --quiet");
+    ASSERT_EQ(full.status, 0) << full.stderr_text;
+    const pid_t pid = start("run " + n + ".toml --out part.h5 --summary part.json --checkpoint-every 0");
+    for (int k = 0; k < 6000 && !exists("part.h5.checkpoint") && slurp(dir_ / "rc.txt").empty(); ++k) sleep_ms(5);
+    ::kill(pid, SIGINT);
+    const int status = wait_exit();
+    if (status == 0) GTEST_SKIP() << "the run ended before the signal";
+    ASSERT_EQ(status, 3) << slurp(dir_ / "err.txt");
+    const Checkpoint left = read_checkpoint((dir_ / "part.h5.checkpoint").string());
+    EXPECT_EQ(left.finished.size(), 0u);
+    ASSERT_EQ(left.in_flight.size(), 1u);
+    const ReplicaInFlight& stopped = left.in_flight.at(0);
+    EXPECT_GE(stopped.samples_taken, 1u);
+    EXPECT_LT(stopped.samples_taken, 17u);
+    EXPECT_EQ(stopped.series.temperature.size(), stopped.samples_taken);
+    const Outcome resumed = granmc("run " + n + ".toml --out part.h5 --summary part.json --resume part.h5.checkpoint");
+    ASSERT_EQ(resumed.status, 0) << resumed.stderr_text;
+    EXPECT_NE(resumed.stdout_text.find("0 of 1 replicas from part.h5.checkpoint, 1 more going on"), std::string::npos)
+        << resumed.stdout_text;
+    EXPECT_EQ(numbers("part.json"), numbers("full.json"));
+  }
 }
 
 TEST_F(Checkpoints, KilledAtRandomAndResumedEachTimeGivesTheSameFiles) {

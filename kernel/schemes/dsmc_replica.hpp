@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <variant>
 #include <vector>
 
 #include "kernel/observe/gas_observation.hpp"
@@ -26,8 +27,8 @@ ReplicaSeries run_dsmc_replica(Sim& sim, const Scene& scene, const std::vector<d
   ReplicaSeries series;
   series.species.resize(scene.species.size());
   std::size_t first = 0;
-  if (const ReplicaInFlight* earlier = options.restored_in_flight ? options.restored_in_flight(replica) : nullptr) {
-    sim.restore(earlier->dsmc);
+  if (const ReplicaInFlight* earlier = restored_in_flight(options, replica)) {
+    sim.restore(std::get<DsmcSnapshot>(earlier->state));
     series = earlier->series;
     initial_majorant = earlier->initial_majorant;
     first = static_cast<std::size_t>(earlier->samples_taken);
@@ -45,7 +46,7 @@ ReplicaSeries run_dsmc_replica(Sim& sim, const Scene& scene, const std::vector<d
                                          effective_collision_frequency(scene, series.temperature.back()));
     }
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
-    if (k + 1 < times.size() && options.in_flight_wanted && options.in_flight_wanted(replica))
+    if (in_flight_wanted(options, replica, k, times.size()))
       options.on_in_flight(replica, ReplicaInFlight{series, k + 1, initial_majorant, sim.snapshot()});
     if (options.on_sample) options.on_sample();
   }

@@ -1,7 +1,9 @@
 #pragma once
 // One replica of the time-step-free white-noise scheme (001 sec. 4) from t = 0 to t_end, observed at the
 // sample times.
+#include <cstddef>
 #include <cstdint>
+#include <variant>
 #include <vector>
 
 #include "kernel/observe/gas_observation.hpp"
@@ -10,16 +12,26 @@
 
 namespace granmc {
 
+/// From a state options.restored_in_flight gives, it goes on from there; when options.in_flight_wanted asks,
+/// it hands its state to options.on_in_flight (RunOptions, schemes/replica_in_flight.hpp).
 template <class Real, class Kernel>
 ReplicaSeries run_event_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
                                 const RunOptions& options, Kernel kernel) {
   BasicEventScheme<Real, Kernel> sim(scene, replica, kernel);
   ReplicaSeries series;
   series.species.resize(1);
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  std::size_t first = 0;
+  if (const ReplicaInFlight* earlier = restored_in_flight(options, replica)) {
+    sim.restore(std::get<EventSnapshot>(earlier->state));
+    series = earlier->series;
+    first = static_cast<std::size_t>(earlier->samples_taken);
+  }
+  for (std::size_t k = first; k < times.size(); ++k) {
     sim.advance_to(times[k]);
     observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
+    if (in_flight_wanted(options, replica, k, times.size()))
+      options.on_in_flight(replica, ReplicaInFlight{series, k + 1, {}, sim.snapshot()});
     if (options.on_sample) options.on_sample();
   }
   series.pair_collisions.push_back(sim.tally().collisions);

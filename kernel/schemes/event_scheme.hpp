@@ -38,17 +38,12 @@
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/core/simd.hpp"
+#include "kernel/schemes/event_tally.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
+#include "kernel/schemes/replica_in_flight.hpp"
 
 namespace granmc {
-
-struct EventTally {
-  std::uint64_t candidates = 0;           // candidate pairs (real + fictitious collisions)
-  std::uint64_t collisions = 0;           // real collisions
-  std::uint64_t majorant_updates = 0;     // raises of U_max at steps 2.7 and 2.10
-  std::uint64_t majorant_violations = 0;  // candidates with |v_i - v_j| above the U_max they were drawn with
-};
 
 enum class Thinning { fictitious, real, violation };
 
@@ -102,6 +97,40 @@ class BasicEventScheme {
 
   [[nodiscard]] const State& state() const noexcept { return state_; }
   [[nodiscard]] const EventTally& tally() const noexcept { return tally_; }
+
+  /// The state at a sample time (after advance_to), for a checkpoint (schemes/replica_in_flight.hpp).
+  [[nodiscard]] EventSnapshot snapshot() const {
+    EventSnapshot s;
+    const Store& store = state_.species[0];
+    s.velocities.reserve(3 * particles_);
+    for (std::size_t k = 0; k < particles_; ++k) {
+      const Vec3 c = store.velocity(k);
+      s.velocities.insert(s.velocities.end(), {c.x, c.y, c.z});
+    }
+    s.time = state_.time, s.draws = draws_, s.syncs = syncs_, s.tally = tally_;
+    return s;
+  }
+
+  /// Puts the replica back in the state `s` of a replica of the same scene at a sample time: there every
+  /// particle was brought to the time (with noise; without, the last-update times are never read), U_max
+  /// was reset from the state, and the draw batches hold the draws from the counter on.
+  void restore(const EventSnapshot& s) {
+    Store& store = state_.species[0];
+    if (s.velocities.size() != 3 * particles_) throw std::runtime_error("a snapshot of another scene");
+    const std::vector<double>& v = s.velocities;
+    for (std::size_t k = 0; k < particles_; ++k) store.set_velocity(k, {v[3 * k], v[3 * k + 1], v[3 * k + 2]});
+    state_.time = s.time;
+    if (noise_ != 0.0) {
+      for (std::size_t k = 0; k < particles_; ++k) store.set_last_update(k, s.time);
+      store.restart_clock(s.time);
+    }
+    draws_ = s.draws, syncs_ = s.syncs, tally_ = s.tally;
+    slot_ = static_cast<std::size_t>(draws_ % batch_size);  // next_slot's invariant
+    current_ = static_cast<unsigned>((draws_ / batch_size) % 2);
+    prepare(batches_[current_], draws_ - slot_);
+    prepare(batches_[current_ ^ 1u], draws_ - slot_ + batch_size);
+    reset_majorant();
+  }
   /// Current majorant U_max in scene velocity units.
   [[nodiscard]] double majorant() const noexcept { return majorant_ * state_.scale.u(); }
 

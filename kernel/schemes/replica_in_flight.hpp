@@ -1,14 +1,17 @@
 #pragma once
 // A replica stopped at a sample time, with what it needs to go on and give the same bits as a run that never
 // stopped: its series so far and the state of its scheme. Checkpoints keep it (io/checkpoint.hpp,
-// drivers/run_checkpoints.hpp); the time-stepped scheme makes and restores it (schemes/dsmc.hpp,
-// schemes/dsmc_replica.hpp). The other schemes keep whole replicas only.
+// drivers/run_checkpoints.hpp); the time-stepped scheme (schemes/dsmc.hpp, schemes/dsmc_replica.hpp) and the
+// time-step-free one (schemes/event_scheme.hpp, schemes/event_replica.hpp) make and restore it. Weighted
+// particles and the intruder schemes keep whole replicas only.
 #include <cstdint>
+#include <variant>
 #include <vector>
 
 #include "kernel/core/sym_tensor.hpp"
 #include "kernel/observe/gas_series.hpp"
 #include "kernel/schemes/collision_stage.hpp"
+#include "kernel/schemes/event_tally.hpp"
 
 namespace granmc {
 
@@ -32,11 +35,22 @@ struct DsmcSnapshot {
   double transfer_since = 0.0;
 };
 
+/// The state of a time-step-free replica (schemes/event_scheme.hpp) at a sample time. What else it holds there
+/// follows from this: every particle's last update is the time (with white noise), U_max is reset from the
+/// velocities, and the draw batches are the draws from `draws` on.
+struct EventSnapshot {
+  std::vector<double> velocities;  // x, y, z of each particle, stored units
+  double time = 0.0;
+  std::uint64_t draws = 0;  // the candidates' random counter
+  std::uint64_t syncs = 0;  // sample-time updates so far (the Brownian sync counter)
+  EventTally tally;
+};
+
 struct ReplicaInFlight {
   ReplicaSeries series;                  // the observations so far
   std::uint64_t samples_taken = 0;       // the next sample time is times[samples_taken]
-  std::vector<double> initial_majorant;  // per pair, for the series' majorant_growth at the end
-  DsmcSnapshot dsmc;
+  std::vector<double> initial_majorant;  // time-stepped scheme: per pair, for the series' majorant_growth
+  std::variant<DsmcSnapshot, EventSnapshot> state;
 };
 
 // Every field, in one order (the checkpoint's packing walks it, io/replica_bytes.hpp).
@@ -59,9 +73,19 @@ void visit_snapshot_fields(S& s, Visit&& visit) {
   visit("transfer_since", s.transfer_since);
 }
 
+template <class S, class Visit>
+void visit_event_snapshot_fields(S& s, Visit&& visit) {
+  visit("velocities", s.velocities);
+  visit("time", s.time);
+  visit("draws", s.draws);
+  visit("syncs", s.syncs);
+  visit("tally", s.tally);
+}
+
 #if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
-// Tripwire: a field added to DsmcSnapshot must be added to the list above; then update the size.
+// Tripwires: a field added to a snapshot must be added to its list above; then update the size.
 static_assert(sizeof(DsmcSnapshot) == 304, "DsmcSnapshot changed: add the new field to visit_snapshot_fields");
+static_assert(sizeof(EventSnapshot) == 80, "EventSnapshot changed: add the new field to visit_event_snapshot_fields");
 #endif
 
 }  // namespace granmc

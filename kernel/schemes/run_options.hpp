@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -39,13 +40,25 @@ struct RunOptions {
   std::function<const ReplicaSeries*(std::uint64_t)> restored;
   std::function<void(std::uint64_t, const ReplicaSeries&)> on_replica;
   std::function<bool()> interrupted;
-  // Replicas in flight, for a scheme that can stop at a sample and go on (the time-stepped one,
-  // schemes/replica_in_flight.hpp): after each observation but the last, when `in_flight_wanted(r)`, it hands
-  // replica r's state to `on_in_flight` (before on_sample, which may then stop it); `restored_in_flight(r)` is
-  // such a state from an earlier run to go on from, or null.
+  // Replicas in flight, for a scheme that can stop at a sample and go on (the time-stepped and time-step-free
+  // ones, schemes/replica_in_flight.hpp): after each observation but the last, when `in_flight_wanted(r)`, it
+  // hands replica r's state to `on_in_flight` (before on_sample, which may then stop it);
+  // `restored_in_flight(r)` is such a state from an earlier run to go on from, or null.
   std::function<bool(std::uint64_t)> in_flight_wanted;
   std::function<void(std::uint64_t, ReplicaInFlight&&)> on_in_flight;
   std::function<const ReplicaInFlight*(std::uint64_t)> restored_in_flight;
 };
+
+/// Replica `replica`'s state from an earlier run to go on from (RunOptions::restored_in_flight), or null.
+inline const ReplicaInFlight* restored_in_flight(const RunOptions& options, std::uint64_t replica) {
+  return options.restored_in_flight ? options.restored_in_flight(replica) : nullptr;
+}
+
+/// Whether replica `replica` hands its state to options.on_in_flight after observation k of `sample_times`
+/// (never after the last: the replica is then finished).
+inline bool in_flight_wanted(const RunOptions& options, std::uint64_t replica, std::size_t k,
+                             std::size_t sample_times) {
+  return k + 1 < sample_times && options.in_flight_wanted && options.in_flight_wanted(replica);
+}
 
 }  // namespace granmc
