@@ -100,7 +100,10 @@ histogram = { shells = 100, radius = 5.0 }
 """,
 }
 
-# The full-disk case: 16 replicas whose series (400 samples) take tens of kB each in a checkpoint.
+# The full-disk case: 16 replicas whose series (400 samples) take tens of kB each in a checkpoint, and
+# whose state in flight (2000 particles) takes 48 kB: the first checkpoints fit in 256 kB, and those with
+# a few finished replicas no longer do. (With a state in flight larger than the disk, a write would fit
+# only at the moments when no replica is in flight.)
 FULL_DISK_SCENE = """[run]
 seed = 3
 replicas = 16
@@ -108,7 +111,7 @@ t_end = 4.0
 dt = 0.01
 samples = 400
 [[species]]
-particles = 20000
+particles = 2000
 [collision]
 restitution = 0.9
 """
