@@ -4,8 +4,8 @@
 // output every `every_minutes` of wall-clock time (0: at every sample and every finished replica) and when
 // SIGINT or SIGTERM arrives; then the run ends (exit status 3) and says how to resume. `--resume FILE` goes on
 // with the replicas in flight, runs those the checkpoint lacks, and writes the files an uninterrupted run
-// writes, bit for bit. At the signal a replica in flight stops at its next sample time; the replicas of
-// weighted particles and of the intruder lose their work there (they are kept whole only). A checkpoint that cannot be
+// writes, bit for bit. At the signal a replica in flight stops at its next sample time; the replicas of the
+// intruder schemes lose their work there (they are kept whole only). A checkpoint that cannot be
 // written (a full disk) leaves the previous one as it was; the run says so on stderr and goes on.
 //
 // Over MPI ranks (replicas on ranks, drivers/mpi_replicas.hpp) each rank keeps its own replicas in its own file,

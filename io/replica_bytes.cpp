@@ -10,7 +10,9 @@ namespace {
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_trivially_copyable_v<Vec3>);
 static_assert(sizeof(SymTensor) == 6 * sizeof(double) && std::is_trivially_copyable_v<SymTensor>);
-static_assert(std::is_trivially_copyable_v<CollisionTally> && std::is_trivially_copyable_v<EventTally>);
+static_assert(std::is_trivially_copyable_v<CollisionTally> && std::is_trivially_copyable_v<EventTally> &&
+              std::is_trivially_copyable_v<SwpmTally> && std::is_trivially_copyable_v<WeightControlTally> &&
+              std::is_trivially_copyable_v<VelocityScale>);
 // The fields of a replica in message order are kernel/observe/gas_series.hpp's one list (visit_replica_fields),
 // walked by Put (writes each field) and Get (reads into it), so writing and reading cannot disagree. Optionals
 // go as a flag byte and, for a record, its fields when present; the energy residual always sends its value (0
@@ -29,10 +31,13 @@ struct Put {
     out.value(static_cast<std::uint64_t>(species.size()));
     for (const SpeciesSeries& sp : species) visit_species_fields(sp, *this);
   }
-  void operator()(const char*, const std::vector<std::vector<double>>& arrays) {
+  template <class T>
+  void operator()(const char*, const std::vector<std::vector<T>>& arrays) {
     out.value(static_cast<std::uint64_t>(arrays.size()));
-    for (const std::vector<double>& a : arrays) out.array(a);
+    for (const std::vector<T>& a : arrays) out.array(a);
   }
+  void operator()(const char*, const WeightedParticles& p) { WeightedParticles::visit_fields(p, *this); }
+  void operator()(const char*, const WeightControl& c) { WeightControl::visit_fields(c, *this); }
   void operator()(const char*, const std::optional<double>& v) {
     out.value(static_cast<std::uint8_t>(v.has_value()));
     out.value(v.value_or(0.0));
@@ -65,10 +70,13 @@ struct Get {
     const auto n = in.value<std::uint64_t>();  // one at a time: a corrupt count fails at the end of the bytes
     for (std::uint64_t i = 0; i < n; ++i) visit_species_fields(species.emplace_back(), *this);
   }
-  void operator()(const char*, std::vector<std::vector<double>>& arrays) {
+  template <class T>
+  void operator()(const char*, std::vector<std::vector<T>>& arrays) {
     const auto n = in.value<std::uint64_t>();
-    for (std::uint64_t i = 0; i < n; ++i) arrays.push_back(in.array<double>());
+    for (std::uint64_t i = 0; i < n; ++i) arrays.push_back(in.array<T>());
   }
+  void operator()(const char*, WeightedParticles& p) { WeightedParticles::visit_fields(p, *this); }
+  void operator()(const char*, WeightControl& c) { WeightControl::visit_fields(c, *this); }
   void operator()(const char* name, std::optional<double>& v) {
     const bool present = flag(name);
     const double value = in.value<double>();
@@ -114,10 +122,12 @@ void write_in_flight(ByteWriter& out, const ReplicaInFlight& f) {
   write_replica(out, f.series);
   out.value(f.samples_taken);
   out.array(f.initial_majorant);
-  out.value(static_cast<std::uint8_t>(f.state.index()));  // the scheme: 0 time-stepped, 1 time-step-free
+  // The scheme: 0 time-stepped, 1 time-step-free, 2 weighted particles.
+  out.value(static_cast<std::uint8_t>(f.state.index()));
   Put put{out};
   if (const auto* dsmc = std::get_if<DsmcSnapshot>(&f.state)) visit_snapshot_fields(*dsmc, put);
   if (const auto* event = std::get_if<EventSnapshot>(&f.state)) visit_event_snapshot_fields(*event, put);
+  if (const auto* swpm = std::get_if<SwpmSnapshot>(&f.state)) visit_swpm_snapshot_fields(*swpm, put);
 }
 
 ReplicaInFlight read_in_flight(ByteReader& in) {
@@ -132,6 +142,9 @@ ReplicaInFlight read_in_flight(ByteReader& in) {
       break;
     case 1:
       visit_event_snapshot_fields(f.state.emplace<EventSnapshot>(), get);
+      break;
+    case 2:
+      visit_swpm_snapshot_fields(f.state.emplace<SwpmSnapshot>(), get);
       break;
     default:
       throw std::runtime_error("replica bytes: bad scheme of a replica in flight");

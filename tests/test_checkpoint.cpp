@@ -165,8 +165,8 @@ TEST_F(Checkpoints, EverySchemeResumesToTheFilesOfAnUninterruptedRun) {
 }
 
 TEST_F(Checkpoints, OneReplicaStopsAtASampleAndGoesOn) {
-  // One large system, time-stepped and time-step-free: SIGINT keeps its state at its next sample time, and
-  // the resumed run goes on from there to the files of an uninterrupted run.
+  // One large system, time-stepped, time-step-free and weighted: SIGINT keeps its state at its next sample
+  // time, and the resumed run goes on from there to the files of an uninterrupted run.
   std::string event = event_scene;  // one replica of 400 000 particles, about 2 s
   event.replace(event.find("replicas = 8"), 12, "replicas = 1");
   event.replace(event.find("particles = 100000"), 18, "particles = 400000");
@@ -175,7 +175,14 @@ TEST_F(Checkpoints, OneReplicaStopsAtASampleAndGoesOn) {
   const std::string dsmc =
       "[run]\nseed = 3\nreplicas = 1\nt_end = 20.0\ndt = 0.01\nsamples = 20\n[[species]]\n"
       "particles = 400000\n[collision]\nrestitution = 0.8\n";
-  for (const auto& [name, text] : {std::pair{"dsmc", dsmc}, std::pair{"event", event}}) {
+  std::string weighted = event_scene;  // one replica of 20 000 weighted particles, about a second
+  weighted.replace(weighted.find("replicas = 8"), 12, "replicas = 1");
+  weighted.replace(weighted.find("particles = 100000"), 18, "particles = 20000");
+  weighted.replace(weighted.find("t_end = 8.0"), 11, "t_end = 4.8");
+  weighted.replace(weighted.find("samples = 4"), 11, "samples = 16");
+  weighted += "[weights]\nscheme = \"swpm\"\nparticles_per_shell = 128\n";
+  for (const auto& [name, text] :
+       {std::pair{"dsmc", dsmc}, std::pair{"event", event}, std::pair{"weighted", weighted}}) {
     SCOPED_TRACE(name);
     const std::string n = name;
     write(n + ".toml", text);

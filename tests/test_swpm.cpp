@@ -3,7 +3,9 @@
 // noise (001 eqs. 16-17 for T(t); docs/derivations/maxwell-white-noise-a2.md for the steady a2), with its
 // tail resolved far below the equal-weight gas's 1/N.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numbers>
 #include <string_view>
@@ -12,7 +14,10 @@
 #include <gtest/gtest.h>
 
 #include "kernel/analysis/replica_statistics.hpp"
+#include "kernel/collide/hard_sphere.hpp"
+#include "kernel/collide/maxwell_pseudomolecules.hpp"
 #include "kernel/core/philox_stream.hpp"
+#include "kernel/schemes/swpm_scheme.hpp"
 #include "kernel/schemes/weight_control.hpp"
 #include "kernel/schemes/weighted_particles.hpp"
 #include "kernel/setup/run_scene.hpp"
@@ -229,4 +234,58 @@ TEST(Swpm, TailReachesFarBelowTheEqualWeightGas) {
     ++compared;
   }
   EXPECT_GE(compared, 6u);
+}
+
+namespace {
+
+/// A replica stopped at sample 2 of 6 and put back into a replica just made (schemes/replica_in_flight.hpp)
+/// goes on to the same bits as the one that never stopped: every particle's velocity, update time and
+/// weight, the stored unit and every count.
+template <class Kernel>
+void expect_swpm_snapshot_goes_on_alike(const Scene& s, Kernel kernel) {
+  SwpmScheme<Kernel> through(s, 0, kernel), stopped(s, 0, kernel);
+  const auto time = [&](int k) { return s.run.t_end * k / s.run.samples; };
+  for (int k = 1; k <= 2; ++k) stopped.advance_to(time(k));
+  const SwpmSnapshot snapshot = stopped.snapshot();
+  SwpmScheme<Kernel> resumed(s, 0, kernel);
+  resumed.restore(snapshot);
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  for (int k = 1; k <= s.run.samples; ++k) {
+    through.advance_to(time(k));
+    if (k <= 2) continue;
+    resumed.advance_to(time(k));
+    const WeightedParticles &a = through.particles(), &b = resumed.particles();
+    ASSERT_EQ(a.size(), b.size()) << "t = " << time(k);
+    for (std::size_t q = 0; q < a.size(); ++q) {
+      ASSERT_EQ(bits(a.velocity(q).x), bits(b.velocity(q).x)) << "particle " << q << " at t = " << time(k);
+      ASSERT_EQ(bits(a.velocity(q).y), bits(b.velocity(q).y)) << "particle " << q << " at t = " << time(k);
+      ASSERT_EQ(bits(a.velocity(q).z), bits(b.velocity(q).z)) << "particle " << q << " at t = " << time(k);
+      ASSERT_EQ(bits(a.last_update(q)), bits(b.last_update(q)));
+      ASSERT_EQ(bits(a.weight(q)), bits(b.weight(q)));
+    }
+    ASSERT_EQ(bits(through.scale().log_u), bits(resumed.scale().log_u));
+  }
+  const SwpmTally &a = through.tally(), &b = resumed.tally();
+  EXPECT_GT(a.transfers, 100u);
+  EXPECT_EQ(a.candidates, b.candidates);
+  EXPECT_EQ(a.collisions, b.collisions);
+  EXPECT_EQ(a.transfers, b.transfers);
+  EXPECT_EQ(a.majorant_updates, b.majorant_updates);
+  EXPECT_EQ(a.majorant_violations, b.majorant_violations);
+  EXPECT_EQ(through.control_tally().reductions, resumed.control_tally().reductions);
+  EXPECT_EQ(through.rescales(), resumed.rescales());
+}
+
+}  // namespace
+
+TEST(Swpm, SnapshotAtASampleTimeGoesOnToTheSameBits) {
+  for (const bool noise : {true, false}) {  // without noise the gas cools and is rescaled
+    SCOPED_TRACE(noise ? "white noise" : "cooling");
+    Scene s = heated_maxwell(true);
+    s.run.t_end = 3.0;
+    s.run.samples = 6;
+    if (!noise) s.thermostat = {};
+    expect_swpm_snapshot_goes_on_alike(s, MaxwellPseudomolecules{});
+    expect_swpm_snapshot_goes_on_alike(s, HardSphere{});
+  }
 }

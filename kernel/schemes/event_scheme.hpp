@@ -38,7 +38,7 @@
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/scene.hpp"
 #include "kernel/core/simd.hpp"
-#include "kernel/schemes/event_tally.hpp"
+#include "kernel/schemes/event_tallies.hpp"
 #include "kernel/schemes/gas_state.hpp"
 #include "kernel/schemes/initial_state.hpp"
 #include "kernel/schemes/replica_in_flight.hpp"

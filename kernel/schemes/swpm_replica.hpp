@@ -1,7 +1,9 @@
 #pragma once
 // One replica of weighted particles (schemes/swpm_scheme.hpp) from t = 0 to t_end, observed at the sample
 // times.
+#include <cstddef>
 #include <cstdint>
+#include <variant>
 #include <vector>
 
 #include "kernel/observe/weighted_observation.hpp"
@@ -10,18 +12,29 @@
 
 namespace granmc {
 
+/// From a state options.restored_in_flight gives, it goes on from there; when options.in_flight_wanted asks,
+/// it hands its state to options.on_in_flight (RunOptions, schemes/replica_in_flight.hpp).
 template <class Kernel>
 ReplicaSeries run_swpm_replica(const Scene& scene, std::uint64_t replica, const std::vector<double>& times,
                                const RunOptions& options, Kernel kernel) {
   SwpmScheme<Kernel> sim(scene, replica, kernel);
   ReplicaSeries series;
   series.species.resize(1);
-  WeightedSeries& weighted = series.weighted.emplace();
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  series.weighted.emplace();
+  std::size_t first = 0;
+  if (const ReplicaInFlight* earlier = restored_in_flight(options, replica)) {
+    sim.restore(std::get<SwpmSnapshot>(earlier->state));
+    series = earlier->series;
+    first = static_cast<std::size_t>(earlier->samples_taken);
+  }
+  WeightedSeries& weighted = *series.weighted;
+  for (std::size_t k = first; k < times.size(); ++k) {
     sim.advance_to(times[k]);
     observe_weighted(scene, sim.particles(), sim.scale(), series, k >= first_stationary_sample(times.size()));
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));
     weighted.particles.push_back(static_cast<double>(sim.particles().size()));
+    if (in_flight_wanted(options, replica, k, times.size()))
+      options.on_in_flight(replica, ReplicaInFlight{series, k + 1, {}, sim.snapshot()});
     if (options.on_sample) options.on_sample();
   }
   series.pair_collisions.push_back(sim.tally().collisions);

@@ -43,19 +43,13 @@
 #include "kernel/core/scene.hpp"
 #include "kernel/core/velocity_scale.hpp"
 #include "kernel/observe/speed_histogram.hpp"
+#include "kernel/schemes/event_tallies.hpp"
 #include "kernel/schemes/initial_state.hpp"
+#include "kernel/schemes/replica_in_flight.hpp"
 #include "kernel/schemes/weight_control.hpp"
 #include "kernel/schemes/weighted_particles.hpp"
 
 namespace granmc {
-
-struct SwpmTally {
-  std::uint64_t candidates = 0;           // candidate pairs
-  std::uint64_t collisions = 0;           // real collisions
-  std::uint64_t transfers = 0;            // collisions of unequal weights (each adds a particle)
-  std::uint64_t majorant_updates = 0;     // raises of U_max
-  std::uint64_t majorant_violations = 0;  // candidates with |v_i - v_j| above the U_max they were drawn with
-};
 
 template <EventKernel Kernel>
 class SwpmScheme {
@@ -90,6 +84,20 @@ class SwpmScheme {
   [[nodiscard]] double time() const noexcept { return time_; }
   /// Rescalings of a freely cooling gas so far.
   [[nodiscard]] std::uint64_t rescales() const noexcept { return rescales_; }
+
+  /// The state at a sample time (after advance_to), for a checkpoint (schemes/replica_in_flight.hpp).
+  [[nodiscard]] SwpmSnapshot snapshot() const {
+    return {particles_, control_, scale_, rescales_, time_, draws_, syncs_, tally_};
+  }
+
+  /// Puts the replica back in the state `s` of a replica of the same scene at a sample time: there U_max was
+  /// reset from the particles, and the noise and rate follow from the stored unit.
+  void restore(const SwpmSnapshot& s) {
+    particles_ = s.particles, control_ = s.control;
+    set_scale(s.scale);
+    rescales_ = s.rescales, time_ = s.time, draws_ = s.draws, syncs_ = s.syncs, tally_ = s.tally;
+    reset_majorant();
+  }
 
   /// Processes every candidate before t, brings all particles to t and runs the weight control.
   void advance_to(double t) {

@@ -39,6 +39,7 @@ class WeightControl {
  public:
   /// `shells` shells of width `width` (stored velocity units) from speed 0; M particles per shell.
   WeightControl(std::size_t shells, double width, int per_shell, double growth);
+  WeightControl() = default;  // to be assigned or read into
 
   /// The shell of a stored velocity, or shells() at or beyond the radius.
   [[nodiscard]] std::size_t shell_of(const Vec3& c) const noexcept;
@@ -61,14 +62,25 @@ class WeightControl {
   void count_split(std::size_t added) noexcept { tally_.split_copies += added; }
   [[nodiscard]] const std::vector<double>& targets() const noexcept { return target_; }
 
+  /// Every member, in one order (a checkpoint's packing walks it, io/replica_bytes.hpp).
+  template <class Self, class Visit>
+  static void visit_fields(Self& c, Visit&& visit) {
+    visit("per_speed", c.per_speed_);
+    visit("per_shell", c.per_shell_);
+    visit("growth", c.growth_);
+    visit("target", c.target_);
+    visit("next_control", c.next_control_);
+    visit("tally", c.tally_);
+  }
+
  private:
   void set_targets(const WeightedParticles& particles);
   void split_all(WeightedParticles& particles);
   void reduce(WeightedParticles& particles, double t);
 
-  double per_speed_;       // shells per stored speed unit
-  std::size_t per_shell_;  // M
-  double growth_;
+  double per_speed_ = 0.0;     // shells per stored speed unit
+  std::size_t per_shell_ = 0;  // M
+  double growth_ = 0.0;
   std::vector<double> target_;  // W_s
   std::size_t next_control_ = 0;
   WeightControlTally tally_;

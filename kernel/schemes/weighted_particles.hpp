@@ -64,6 +64,21 @@ class WeightedParticles {
     resum_weight_bound();
   }
 
+  /// Every member, in one order (a checkpoint's packing walks it, io/replica_bytes.hpp): the members' order in
+  /// their classes too, on which the choices depend.
+  template <class Self, class Visit>
+  static void visit_fields(Self& p, Visit&& visit) {
+    visit("velocity", p.velocity_);
+    visit("last_update", p.last_update_);
+    visit("weight", p.weight_);
+    visit("class", p.class_);
+    visit("position", p.position_);
+    visit("members", p.members_);
+    visit("lowest", p.lowest_);
+    visit("highest", p.highest_);
+    visit("bound_total", p.bound_total_);
+  }
+
   /// weight_bound() summed afresh from the counts, from the heaviest class.
   void resum_weight_bound() noexcept {
     bound_total_ = 0.0;
