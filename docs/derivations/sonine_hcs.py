@@ -1,42 +1,53 @@
 #!/usr/bin/env python3
-"""Exact collisional moments mu_2, mu_4, mu_6 of smooth inelastic hard spheres (d = 3) for the
-second-Sonine distribution F = phi(c) [1 + a2 S2(c^2) + a3 S3(c^2)], and the HCS Sonine coefficients.
+"""Exact collisional moments mu_2, mu_4, mu_6 of smooth inelastic hard spheres (d = 3) or hard disks
+(d = 2) for the second-Sonine distribution F = phi(c) [1 + a2 S2(c^2) + a3 S3(c^2)], and the HCS Sonine
+coefficients.
 
-Run with /usr/bin/python3 (needs sympy).  Derivation: docs/derivations/sonine-hcs.md.
+Run with /usr/bin/python3 (needs sympy): `sonine_hcs.py [--dimension 2]` (default 3), with `--quad` or
+`--mc` for the independent checks of the moments.  Derivation: docs/derivations/sonine-hcs.md.
 
     mu_p = -int dc c^p I[F,F]
          = -(1/2) int dc1 dc2 dsigma Theta(sigma.g) (sigma.g) F(c1) F(c2) [c1'^p + c2'^p - c1^p - c2^p],
     g = c1 - c2,  c1' = c1 - (1+alpha)/2 (sigma.g) sigma,  c2' = c2 + (1+alpha)/2 (sigma.g) sigma.
 
 Centre-of-mass and relative coordinates G = (c1+c2)/2, g (unit Jacobian): phi(c1) phi(c2) =
-pi^-3 exp(-2 G^2 - g^2/2).  The integrand is rotation invariant, so the sigma integral is 4 pi times the
-integrand at sigma = z.  Then c1^2, c2^2 = G^2 +- G.g + g^2/4 and c1'^2, c2'^2 = G^2 +- G.g' + g'^2/4 with
-g' = (g_x, g_y, -alpha g_z).  What remains is a polynomial in the six Cartesian components times
-Gaussians (g_z restricted to g_z > 0, with one extra power g_z), each monomial integrated exactly:
+pi^-d exp(-2 G^2 - g^2/2).  The integrand is rotation invariant, so the sigma integral is S_d (4 pi, or
+2 pi for disks) times the integrand at sigma along the last axis z.  Then c1^2, c2^2 = G^2 +- G.g + g^2/4
+and c1'^2, c2'^2 = G^2 +- G.g' + g'^2/4 with g' = g with g_z -> -alpha g_z.  What remains is a polynomial in
+the 2d Cartesian components times Gaussians (g_z restricted to g_z > 0, with one extra power g_z), each
+monomial integrated exactly:
     int x^(2k) exp(-2 x^2) dx  = sqrt(pi/2) (2k-1)!! / 4^k          (G components)
-    int x^(2k) exp(-x^2/2) dx  = sqrt(2 pi) (2k-1)!!                 (g_x, g_y)
+    int x^(2k) exp(-x^2/2) dx  = sqrt(2 pi) (2k-1)!!                 (the d - 1 transverse g components)
     int_0^inf z^(2m+1) exp(-z^2/2) dz = 2^m m!                        (g_z, incl. the factor sigma.g)
-Collecting the constants, mu_p = -sqrt(2 pi) * sum_monomials coeff * (product of the rational parts).
+Collecting the constants, mu_p = -sqrt(2 pi) kappa_d * sum_monomials coeff * (product of the rational
+parts), kappa_d = S_d pi^-d (pi/2)^(d/2) (2 pi)^((d-1)/2) / (2 sqrt(2 pi)): 1 for d = 3, 1/2 for d = 2.
 The result is printed as mu_p / sqrt(2 pi) = polynomial in alpha, a2, a3 with rational coefficients.
+The Sonine polynomials are the Laguerre polynomials L^(d/2-1)_2 and L^(d/2-1)_3 of c^2.
 """
 import sys
 import time
 from fractions import Fraction
-from math import factorial
+from math import factorial, pi
 
 import sympy as sp
 from sympy.polys.rings import ring
 from sympy.polys.domains import QQ
 
-R, Gx, Gy, Gz, gx, gy, gz, al, A2, A3 = ring("Gx,Gy,Gz,gx,gy,gz,al,A2,A3", QQ)
+D = int(sys.argv[sys.argv.index("--dimension") + 1]) if "--dimension" in sys.argv else 3
+if D not in (2, 3):
+    raise SystemExit("--dimension: 2 or 3")
+# G_0 .. G_{d-1}, g_0 .. g_{d-1} (g_{d-1} along sigma), alpha, a2, a3
+R, *GENS = ring(",".join([f"G{i}" for i in range(D)] + [f"g{i}" for i in range(D)] + ["al", "A2", "A3"]), QQ)
+G, g, al, A2, A3 = GENS[:D], GENS[D:2 * D], GENS[2 * D], GENS[2 * D + 1], GENS[2 * D + 2]
+KAPPA = {3: sp.Integer(1), 2: sp.Rational(1, 2)}[D]  # the docstring's kappa_d (checked in main)
 
 
-def S2(x):  # L^(1/2)_2(x)
-    return QQ(1, 2) * x**2 - QQ(5, 2) * x + QQ(15, 8)
+def S2(x, d=D):  # L^(d/2-1)_2(x)
+    return QQ(1, 2) * x**2 - QQ(d + 2, 2) * x + QQ(d * (d + 2), 8)
 
 
-def S3(x):  # L^(1/2)_3(x)
-    return -QQ(1, 6) * x**3 + QQ(7, 4) * x**2 - QQ(35, 8) * x + QQ(35, 16)
+def S3(x, d=D):  # L^(d/2-1)_3(x)
+    return -QQ(1, 6) * x**3 + QQ(d + 4, 4) * x**2 - QQ((d + 2) * (d + 4), 8) * x + QQ(d * (d + 2) * (d + 4), 48)
 
 
 def dfact(n):  # (2k-1)!! with n = 2k-1, (-1)!! = 1
@@ -47,11 +58,11 @@ def dfact(n):  # (2k-1)!! with n = 2k-1, (-1)!! = 1
     return r
 
 
-G2 = Gx**2 + Gy**2 + Gz**2
-Gg = Gx * gx + Gy * gy + Gz * gz
-g2 = gx**2 + gy**2 + gz**2
-Ggp = Gx * gx + Gy * gy - al * Gz * gz
-gp2 = gx**2 + gy**2 + al**2 * gz**2
+G2 = sum(x**2 for x in G)
+Gg = sum(x * y for x, y in zip(G, g))
+g2 = sum(y**2 for y in g)
+Ggp = Gg - (1 + al) * G[-1] * g[-1]  # g' = g with g_z -> -alpha g_z
+gp2 = g2 - g[-1]**2 + al**2 * g[-1]**2
 c1sq, c2sq = G2 + Gg + g2 / 4, G2 - Gg + g2 / 4
 c1psq, c2psq = G2 + Ggp + gp2 / 4, G2 - Ggp + gp2 / 4
 
@@ -63,16 +74,16 @@ def gauss_integral(poly):
     for mon, coeff in poly.terms():
         e = mon
         # parity: every Cartesian exponent must be even (g_z even as well; the weight carries g_z^1)
-        if any(x % 2 for x in e[:6]):
+        if any(x % 2 for x in e[:2 * D]):
             continue
         val = Fraction(1)
-        for k in e[:3]:
+        for k in e[:D]:
             val *= Fraction(dfact(k - 1), 4 ** (k // 2))
-        for k in e[3:5]:
+        for k in e[D:2 * D - 1]:
             val *= dfact(k - 1)
-        m = e[5] // 2
+        m = e[2 * D - 1] // 2
         val *= (2**m) * factorial(m)
-        key = e[6:]
+        key = e[2 * D:]
         out[key] = out.get(key, Fraction(0)) + Fraction(int(coeff.numerator), int(coeff.denominator)) * val
     return out
 
@@ -90,34 +101,44 @@ def collision_moment(p, maxdeg=2):
     # group ff by its (A2, A3) exponent
     groups = {}
     for mon, coeff in ff.terms():
-        key = mon[7:]
+        key = mon[2 * D + 1:]
         if sum(key) > maxdeg:
             continue
         groups.setdefault(key, R(0))
-        groups[key] += R({mon[:7] + (0, 0): coeff})
+        groups[key] += R({mon[:2 * D + 1] + (0, 0): coeff})
+    kappa = Fraction(int(KAPPA.p), int(KAPPA.q))
     for key, part in groups.items():
         integ = gauss_integral(part * delta)
         for (ea, _, _), v in integ.items():
             k = (ea,) + key
-            res[k] = res.get(k, Fraction(0)) - v
+            res[k] = res.get(k, Fraction(0)) - kappa * v
     return {k: v for k, v in res.items() if v != 0}
+
+
+SURFACE = {3: 4 * pi, 2: 2 * pi}[D]  # S_d, the area of the unit sphere (circle)
+
+
+def S2n(x):  # S2, numerically
+    return 0.5 * x * x - (D + 2) / 2 * x + D * (D + 2) / 8
+
+
+def S3n(x):  # S3, numerically
+    return -x**3 / 6 + (D + 4) / 4 * x * x - (D + 2) * (D + 4) / 8 * x + D * (D + 2) * (D + 4) / 48
 
 
 def monte_carlo_check(alpha_val, nsamp=40_000_000, batch=2_000_000, seed=1):
     """Independent check of every coefficient of mu_p (p = 2, 4, 6) by plain Monte Carlo: c1, c2 drawn
     from phi, sigma uniform on the sphere (no centre-of-mass coordinates, no symbolic algebra).
-    mu_p coefficient of a2^i a3^j = -E[2 pi Theta(s.g) (s.g) w_ij(c1, c2) Delta_p]."""
+    mu_p coefficient of a2^i a3^j = -E[(S_d / 2) Theta(s.g) (s.g) w_ij(c1, c2) Delta_p]."""
     import numpy as np
     rng = np.random.default_rng(seed)
-    S2n = lambda x: 0.5 * x * x - 2.5 * x + 15 / 8
-    S3n = lambda x: -x**3 / 6 + 1.75 * x * x - 35 / 8 * x + 35 / 16
     keys = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)]
     acc = {(p, k): [0.0, 0.0] for p in (2, 4, 6) for k in keys}
     n = 0
     while n < nsamp:
-        c1 = rng.normal(scale=np.sqrt(0.5), size=(batch, 3))
-        c2 = rng.normal(scale=np.sqrt(0.5), size=(batch, 3))
-        s = rng.normal(size=(batch, 3)); s /= np.linalg.norm(s, axis=1)[:, None]
+        c1 = rng.normal(scale=np.sqrt(0.5), size=(batch, D))
+        c2 = rng.normal(scale=np.sqrt(0.5), size=(batch, D))
+        s = rng.normal(size=(batch, D)); s /= np.linalg.norm(s, axis=1)[:, None]
         sg = np.einsum("ij,ij->i", s, c1 - c2)
         th = np.where(sg > 0, sg, 0.0)
         c1p = c1 - 0.5 * (1 + alpha_val) * sg[:, None] * s
@@ -130,7 +151,7 @@ def monte_carlo_check(alpha_val, nsamp=40_000_000, batch=2_000_000, seed=1):
             h = p // 2
             delta = y1**h + y2**h - x1**h - x2**h
             for k in keys:
-                v = -2 * np.pi * th * w[k] * delta / np.sqrt(2 * np.pi)
+                v = -0.5 * SURFACE * th * w[k] * delta / np.sqrt(2 * np.pi)
                 acc[(p, k)][0] += v.sum(); acc[(p, k)][1] += (v * v).sum()
         n += batch
     out = {}
@@ -142,21 +163,21 @@ def monte_carlo_check(alpha_val, nsamp=40_000_000, batch=2_000_000, seed=1):
 
 def quadrature_check(alpha_val):
     """Independent deterministic check of every coefficient of mu_p: sigma = z (rotation invariance);
-    c1x, c1y, c2x, c2y by Gauss-Hermite (12 nodes, exact to degree 23 per component), the z pair in
-    (Gz, gz): Gz by Gauss-Hermite for the weight exp(-2 Gz^2), gz > 0 by 80-node Gauss-Legendre on
-    [0, 14] (the integrand is a polynomial times exp(-gz^2/2)).  Returns {(p, (i, j)): mu_p coeff/sqrt(2pi)}."""
+    the transverse components of c1 and c2 by Gauss-Hermite (12 nodes, exact to degree 23 per component),
+    the z pair in (Gz, gz): Gz by Gauss-Hermite for the weight exp(-2 Gz^2), gz > 0 by 80-node
+    Gauss-Legendre on [0, 14] (the integrand is a polynomial times exp(-gz^2/2)).  Returns
+    {(p, (i, j)): mu_p coeff/sqrt(2pi)}."""
     import numpy as np
     xh, wh = np.polynomial.hermite.hermgauss(12)          # weight exp(-x^2)
     xl, wl = np.polynomial.legendre.leggauss(80)
     zg, wz = 7.0 * (xl + 1.0), 7.0 * wl                   # gz in [0, 14]
     Gz, wG = xh / np.sqrt(2.0), wh / np.sqrt(2.0)         # weight exp(-2 Gz^2)
-    S2n = lambda x: 0.5 * x * x - 2.5 * x + 15 / 8
-    S3n = lambda x: -x**3 / 6 + 1.75 * x * x - 35 / 8 * x + 35 / 16
-    # 4D transverse grid
-    X = np.stack(np.meshgrid(xh, xh, xh, xh, indexing="ij"), -1).reshape(-1, 4)
-    W = np.prod(np.stack(np.meshgrid(wh, wh, wh, wh, indexing="ij"), -1).reshape(-1, 4), axis=1)
-    t1 = X[:, 0]**2 + X[:, 1]**2
-    t2 = X[:, 2]**2 + X[:, 3]**2
+    # the transverse grid: d - 1 components of c1, then d - 1 of c2
+    n = 2 * (D - 1)
+    X = np.stack(np.meshgrid(*[xh] * n, indexing="ij"), -1).reshape(-1, n)
+    W = np.prod(np.stack(np.meshgrid(*[wh] * n, indexing="ij"), -1).reshape(-1, n), axis=1)
+    t1 = (X[:, :D - 1]**2).sum(1)
+    t2 = (X[:, D - 1:]**2).sum(1)
     keys = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)]
     acc = {(p, k): 0.0 for p in (2, 4, 6) for k in keys}
     for G, wg in zip(Gz, wG):
@@ -173,8 +194,8 @@ def quadrature_check(alpha_val):
                 delta = y1**h + y2**h - x1**h - x2**h
                 for k in keys:
                     acc[(p, k)] += float(np.sum(base * w[k] * delta))
-    # measure: -(1/2) * 4 pi * pi^-3 * (dc1 dc2 = dG dg) ; transverse weights carry exp(-c^2)
-    pref = -0.5 * 4 * np.pi / np.pi**3 / np.sqrt(2 * np.pi)
+    # measure: -(1/2) * S_d * pi^-d * (dc1 dc2 = dG dg) ; transverse weights carry exp(-c^2)
+    pref = -0.5 * SURFACE / np.pi**D / np.sqrt(2 * np.pi)
     return {k: pref * v for k, v in acc.items()}
 
 
@@ -189,13 +210,18 @@ def to_sympy(d):
 def main():
     t0 = time.time()
     # Sonine normalisation checks: <c^4>, <c^6> for F = phi (1 + a2 S2 + a3 S3)
+    print(f"d = {D}")
     c = sp.symbols("c", positive=True)
     x = c**2
-    phi = sp.pi**sp.Rational(-3, 2) * sp.exp(-x)
-    S2s = x**2 / 2 - sp.Rational(5, 2) * x + sp.Rational(15, 8)
-    S3s = -x**3 / 6 + sp.Rational(7, 4) * x**2 - sp.Rational(35, 8) * x + sp.Rational(35, 16)
+    d = sp.Integer(D)
+    phi = sp.pi**(-d / 2) * sp.exp(-x)
+    S2s = x**2 / 2 - (d + 2) / 2 * x + d * (d + 2) / 8
+    S3s = -x**3 / 6 + (d + 4) / 4 * x**2 - (d + 2) * (d + 4) / 8 * x + d * (d + 2) * (d + 4) / 48
+    surface = 2 * sp.pi**(d / 2) / sp.gamma(d / 2)
+    kappa = surface * sp.pi**(-d) * (sp.pi / 2)**(d / 2) * (2 * sp.pi)**((d - 1) / 2) / (2 * sp.sqrt(2 * sp.pi))
+    print("kappa_d =", sp.simplify(kappa), "  == KAPPA:", sp.simplify(kappa - KAPPA) == 0)
     F = phi * (1 + a2 * S2s + a3 * S3s)
-    mom = lambda n: sp.simplify(sp.integrate(4 * sp.pi * c**2 * c**n * F, (c, 0, sp.oo)))
+    mom = lambda n: sp.simplify(sp.integrate(surface * c**(d - 1) * c**n * F, (c, 0, sp.oo)))
     print("<1>   =", mom(0))
     print("<c^2> =", mom(2))
     print("<c^4> =", sp.factor(mom(4)))
@@ -212,11 +238,11 @@ def main():
         sys.stdout.flush()
     print(f"(moments: {time.time() - t0:.1f} s)")
 
-    # ---- HCS equations: mu_p = (p/3) mu_2 <c^p>
-    c4 = sp.Rational(15, 4) * (1 + a2)
-    c6 = sp.Rational(105, 8) * (1 + 3 * a2 - a3)
-    E4 = sp.expand(mu[4] - sp.Rational(4, 3) * mu[2] * c4)
-    E6 = sp.expand(mu[6] - 2 * mu[2] * c6)
+    # ---- HCS equations: mu_p = (p/d) mu_2 <c^p>
+    c4 = d * (d + 2) / 4 * (1 + a2)
+    c6 = d * (d + 2) * (d + 4) / 8 * (1 + 3 * a2 - a3)
+    E4 = sp.expand(mu[4] - 4 / d * mu[2] * c4)
+    E6 = sp.expand(mu[6] - 6 / d * mu[2] * c6)
 
     def lin(e, vars_):
         P = sp.Poly(e, *vars_)
@@ -226,7 +252,7 @@ def main():
     E4_1 = E4.subs(a3, 0)
     l = sp.Poly(lin(E4_1, [a2]), a2)
     a2_lin = sp.factor(-l.coeff_monomial(1) / l.coeff_monomial(a2))
-    vne = 16 * (1 - alpha) * (1 - 2 * alpha**2) / (81 - 17 * alpha + 30 * alpha**2 * (1 - alpha))
+    vne = 16 * (1 - alpha) * (1 - 2 * alpha**2) / (9 + 24 * d - alpha * (41 - 8 * d) + 30 * alpha**2 * (1 - alpha))
     print("\nlinear first Sonine a2 =", a2_lin, "   == vNE:", sp.simplify(a2_lin - vne) == 0)
 
     # (1) nonlinear first Sonine: E4(a2, a3=0) = 0 exactly (cubic in a2)
@@ -247,8 +273,8 @@ def main():
     print("  a2 =", sp.factor(sol[a2]))
     print("  a3 =", sp.factor(sol[a3]))
 
-    D = sp.Poly(sp.denom(sp.factor(sol[a2])), alpha)
-    print("  real roots of the denominator:", [float(r) for r in sp.real_roots(D)], "(none in [0, 1] => regular)")
+    den = sp.Poly(sp.denom(sp.factor(sol[a2])), alpha)
+    print("  real roots of the denominator:", [float(r) for r in sp.real_roots(den)], "(none in [0, 1] => regular)")
 
     # table
     print("\nalpha  a2_vNE      a2_NL1      a2_NL1q     a2_2S(lin)  a3_2S(lin)  a2_2S(NL)   a3_2S(NL)"
@@ -259,8 +285,8 @@ def main():
 
     def linearise(e, vars_):
         return sp.series(e.subs({v: t * v for v in vars_}), t, 0, 2).removeO().subs(t, 1)
-    R4 = mu[4] / mu[2] - 5 * (1 + a2)
-    R6 = mu[6] / mu[2] - sp.Rational(105, 4) * (1 + 3 * a2 - a3)
+    R4 = mu[4] / mu[2] - 4 / d * c4
+    R6 = mu[6] / mu[2] - 6 / d * c6
     ratio_rows = []
     for av in [sp.Rational(k, 10) for k in range(1, 10)]:
         alin = float(a2_lin.subs(alpha, av))
