@@ -45,6 +45,40 @@ struct RunArgs {
   bool no_checkpoints = false;
 };
 
+std::string default_output(const std::string& scene_path) {
+  return std::filesystem::path(scene_path).stem().string() + ".h5";
+}
+
+/// The checkpoints line of --explain (drivers/run_checkpoints.hpp): where, how often, and what a replica in
+/// flight adds to each one.
+void explain_checkpoints(const Scene& scene, const RunPlan& plan, const RunArgs& args, const PlanExplanation& what) {
+  if (plan.spread == Spread::particles || args.no_checkpoints) {
+    std::printf("checkpoints  none (%s)\n", args.no_checkpoints ? "--no-checkpoints" : "one replica over the ranks");
+    return;
+  }
+  std::string out = checkpoint_path(args.out.empty() ? default_output(args.scene) : args.out);
+  if (const Place at = place(); at.size > 1) out += ".K-of-" + std::to_string(at.size) + " (one file per rank)";
+  const double every = args.checkpoint_every.value_or(scene.run.checkpoint_every);
+  char when[64];
+  if (every == 0.0)
+    std::snprintf(when, sizeof when, "at every sample");
+  else
+    std::snprintf(when, sizeof when, "every %g min", every);
+  if (!what.gas) {
+    std::printf(
+        "checkpoints  %s and on SIGINT or SIGTERM to %s: the finished replicas (an intruder replica is "
+        "kept whole only)\n",
+        when, out.c_str());
+    return;
+  }
+  // A replica in flight: 24 bytes per particle, 52 for weighted particles (their count at the start).
+  const double per_particle = scene.weights ? 52.0 : 24.0;
+  std::printf(
+      "checkpoints  %s and on SIGINT or SIGTERM to %s: the finished replicas, and each replica in flight "
+      "at its latest sample (%.1f MB each)\n",
+      when, out.c_str(), per_particle * static_cast<double>(total_particles(scene)) / 1e6);
+}
+
 int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs& args) {
   const Place at = place();
   if (at.rank != 0) return exit_ok;
@@ -74,6 +108,7 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
         "ranks        %d MPI ranks, replica r on rank r mod %d; rank 0 runs %d of the %d replicas, "
         "memory and work below are rank 0's\n",
         at.size, at.size, scene.run.replicas, full_scene.run.replicas);
+  explain_checkpoints(full_scene, plan, args, what);
   if (!what.gas) {
     std::printf("work         about %.3g collision events (one intruder per replica)\n", what.events);
     return exit_ok;
@@ -132,10 +167,6 @@ std::optional<CheckedScene> checked_scene(const std::string& path, std::optional
   std::optional<CheckedScene> scene = load_checked_scene(path, seed, spread, message);
   if (!all_ranks_ok(scene.has_value(), message)) return std::nullopt;
   return scene;
-}
-
-std::string default_output(const std::string& scene_path) {
-  return std::filesystem::path(scene_path).stem().string() + ".h5";
 }
 
 int run_command(const RunArgs& args) {

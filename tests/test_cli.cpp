@@ -144,6 +144,11 @@ TEST_F(Cli, ExplainPrintsThePlanAndRunsNothing) {
   EXPECT_NE(o.stdout_text.find("dsmc<hard-sphere, gaussian-thermostat>"), std::string::npos) << o.stdout_text;
   EXPECT_NE(o.stdout_text.find("not compiled shear"), std::string::npos) << o.stdout_text;
   EXPECT_NE(o.stdout_text.find("memory"), std::string::npos) << o.stdout_text;
+  EXPECT_NE(o.stdout_text.find("checkpoints  every 10 min and on SIGINT or SIGTERM to heated.h5.checkpoint"),
+            std::string::npos)
+      << o.stdout_text;
+  EXPECT_NE(granmc("run heated.toml --explain --no-checkpoints").stdout_text.find("checkpoints  none"),
+            std::string::npos);
   EXPECT_TRUE(outputs().empty());
 }
 
