@@ -247,10 +247,17 @@ int run_command(const RunArgs& args) {
 }
 
 int theory_command(const std::string& path) {
-  const std::optional<CheckedScene> checked = checked_scene(path, std::nullopt);
-  if (!checked) return exit_bad_input;
+  // The scene alone, without its plan: the theory of a scene that granmc cannot run yet (a gas in d = 2) too.
+  std::string message;
+  std::optional<Scene> scene;
+  try {
+    scene = load_scene(path);
+  } catch (const SceneError& e) {
+    message = std::string("granmc: ") + e.what() + "\n";
+  }
+  if (!all_ranks_ok(scene.has_value(), message)) return exit_bad_input;
   if (place().rank != 0) return exit_ok;
-  std::cout << scene_theory_json(checked->scene).dump(2) << "\n";
+  std::cout << scene_theory_json(*scene).dump(2) << "\n";
   return exit_ok;
 }
 

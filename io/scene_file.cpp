@@ -40,7 +40,7 @@ const std::vector<KnownTable>& known_tables() {
   static const std::vector<KnownTable> tables = {
       {"[run]",
        {"method", "seed", "replicas", "t_end", "dt", "samples", "dt_scaling", "sample_spacing", "storage",
-        "checkpoint_every"}},
+        "checkpoint_every", "dimension"}},
       {"[[species]]", {"name", "mass", "diameter", "density", "particles"}},
       {"[collision]", {"kernel", "lambda", "rate", "restitution", "packing_fraction"}},
       {"[thermostat]", {"kind", "zeta", "beta"}},
@@ -492,6 +492,11 @@ void Reader::read_run(const Section& s, RunConfig& run) const {
   if (dt) run.dt = non_negative(s.key("dt"), *dt);
   if (const auto every = number(s, "checkpoint_every", "a finite number >= 0 (minutes)"))
     run.checkpoint_every = non_negative(s.key("checkpoint_every"), *every);
+  if (const auto d = integer(s, "dimension", "2 or 3")) {
+    if (*d != 2 && *d != 3)
+      fail(s.key("dimension"), fmt(*d) + " is not 2 or 3: a gas of hard disks (2) or of hard spheres (3)");
+    run.dimension = static_cast<int>(*d);
+  }
   if (run.method == Method::dsmc) {
     if (!dt) {
       fail(s.key("dt"), "missing required key for method \"dsmc\"; set a time step 0 < dt <= t_end in [run]");
@@ -857,6 +862,8 @@ void Reader::read(const toml::table& root, Scene& scene) const {
   scene.initial_zero_momentum = boolean(initial, "zero_momentum").value_or(true);
 
   if (intruder.table) {
+    if (run.has("dimension"))
+      fail("run.dimension", "applies to a gas; an intruder's dimension is [intruder] dimension");
     IntruderConfig in;
     read_intruder(intruder, in);
     scene.intruder = in;

@@ -33,7 +33,11 @@ namespace {
 void add_cooling_state(const Scene& scene, const std::vector<double>& times, nlohmann::json& j,
                        nlohmann::json& applies) {
   if (const auto hcs = theory::cooling_state(scene, times)) {
-    applies.push_back("homogeneous cooling state, monodisperse hard spheres: Haff's law, Sonine a2 (docs/physics.md)");
+    applies.push_back(scene.run.dimension == 2
+                          ? "homogeneous cooling state, monodisperse hard disks: Haff's law, Sonine "
+                            "a2 (docs/derivations/sonine-hcs.md, \"Hard disks\")"
+                          : "homogeneous cooling state, monodisperse hard spheres: Haff's law, "
+                            "Sonine a2 (docs/physics.md)");
     j["times"] = times;
     j["cooling_state"] = cooling_state_json(*hcs);
   }
@@ -80,7 +84,8 @@ void add_intruder(const Scene& scene, const std::vector<double>& /*times*/, nloh
 /// The kernel form of 001: Maxwell's exact temperature relaxation, the white-noise steady state and tails;
 /// the first-Sonine white-noise a2 of hard spheres in 000's form.
 void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohmann::json& j, nlohmann::json& applies) {
-  if (scene.species.size() == 1 && scene.collision.rate > 0.0) {  // the kernel form of 001
+  const int d = scene.run.dimension;
+  if (scene.species.size() == 1 && scene.collision.rate > 0.0 && d == 3) {  // the kernel form of 001
     const double alpha = scene.collision.restitution[0][0], rate = scene.collision.rate;
     const double beta = scene.thermostat.kind == ThermostatKind::white_noise ? scene.thermostat.beta : 0.0;
     const double lambda = scene.collision.lambda;
@@ -124,15 +129,19 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
     }
   } else if (scene.thermostat.kind == ThermostatKind::white_noise && scene.species.size() == 1 &&
              scene.collision.kernel == CollisionKernel::hard_sphere) {
-    applies.push_back("white-noise heated steady state, monodisperse hard spheres: first-Sonine a2");
-    j["white_noise"] = {{"a2", theory::white_noise_a2(scene.collision.restitution[0][0])}};
+    applies.push_back(std::string("white-noise heated steady state, monodisperse ") +
+                      (d == 2 ? "hard disks" : "hard spheres") + ": first-Sonine a2");
+    j["white_noise"] = {{"a2", theory::white_noise_a2(scene.collision.restitution[0][0], d)}};
   }
 }
 
 /// The Enskog pair correlation at contact chi_ij (000 eq. 3).
 void add_enskog_chi(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
                     nlohmann::json& applies) {
-  if (scene.collision.packing_fraction > 0.0 && !scene.species.empty()) {
+  if (scene.collision.packing_fraction > 0.0 && scene.species.size() == 1 && scene.run.dimension == 2) {
+    applies.push_back("Enskog pair correlation at contact chi of hard disks, Henderson (Mol. Phys. 30 (1975) 971)");
+    j["henderson_chi"] = enskog_chi_disks(scene.collision.packing_fraction);
+  } else if (scene.collision.packing_fraction > 0.0 && !scene.species.empty() && scene.run.dimension == 3) {
     const double n = total_density(scene);
     std::vector<double> x, sigma;
     for (const auto& s : scene.species) {
@@ -154,7 +163,8 @@ void add_enskog_chi(const Scene& scene, const std::vector<double>& /*times*/, nl
 /// The first-Sonine Navier-Stokes shear viscosity of a uniform shear flow of hard spheres.
 void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
                    nlohmann::json& applies) {
-  if (scene.shear_rate != 0.0 && scene.collision.kernel == CollisionKernel::hard_sphere && !scene.species.empty()) {
+  if (scene.shear_rate != 0.0 && scene.collision.kernel == CollisionKernel::hard_sphere && !scene.species.empty() &&
+      scene.run.dimension == 3) {
     // The reference state whose Navier-Stokes viscosity the run measures: the HSS of 000 (Gaussian thermostat
     // compensating the cooling), or the HCS with 003's relaxation term (theory/viscosity.hpp).
     const bool hcs = scene.relaxation;
@@ -197,9 +207,10 @@ void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlo
 /// hard spheres, Grad's solution (theory/steady_shear.hpp).
 void add_steady_shear(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
                       nlohmann::json& applies) {
-  if (scene.run.method != Method::dsmc || scene.shear_rate == 0.0 || scene.species.size() != 1 ||
-      scene.collision.kernel != CollisionKernel::hard_sphere || scene.collision.packing_fraction > 0.0 ||
-      scene.thermostat.kind != ThermostatKind::none || scene.relaxation || scene.collision.restitution[0][0] >= 1.0)
+  if (scene.run.method != Method::dsmc || scene.run.dimension != 3 || scene.shear_rate == 0.0 ||
+      scene.species.size() != 1 || scene.collision.kernel != CollisionKernel::hard_sphere ||
+      scene.collision.packing_fraction > 0.0 || scene.thermostat.kind != ThermostatKind::none || scene.relaxation ||
+      scene.collision.restitution[0][0] >= 1.0)
     return;
   const SpeciesConfig& sp = scene.species[0];
   const theory::SteadyShearFlow s = theory::steady_shear_grad(scene.collision.restitution[0][0]);
@@ -221,6 +232,7 @@ void add_steady_shear(const Scene& scene, const std::vector<double>& /*times*/, 
 nlohmann::json scene_theory_json(const Scene& scene) {
   nlohmann::json j;
   j["scene"] = scene.source_path;
+  if (!scene.intruder) j["dimension"] = scene.run.dimension;
   nlohmann::json applies = nlohmann::json::array();
   const std::vector<double> times = sample_times(scene.run);
   for (auto add : {add_cooling_state, add_scaled_state, add_mixture, add_intruder, add_kernel_form, add_enskog_chi,

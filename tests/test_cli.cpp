@@ -108,6 +108,30 @@ TEST_F(Cli, TheoryPrintsJsonForTheScene) {
   EXPECT_NE(o.stdout_text.find("\"a2_second_sonine\""), std::string::npos);
 }
 
+/// A gas of hard disks (run.dimension = 2): `granmc theory` gives its cooling state (docs/derivations/sonine-hcs.md,
+/// "Hard disks"), and `granmc run` refuses it, naming the key, with nothing written.
+TEST_F(Cli, HardDisksHaveTheirTheoryAndAreNotRunYet) {
+  write("disks.toml", with("dt = 0.01", "dt = 0.01\ndimension = 2"));
+  const Outcome o = granmc("theory disks.toml");
+  ASSERT_EQ(o.status, 0) << o.stderr_text;
+  const nlohmann::json j = nlohmann::json::parse(o.stdout_text);
+  EXPECT_EQ(j["dimension"], 2);
+  const double alpha = 0.9;
+  EXPECT_EQ(j["cooling_state"]["a2"].get<double>(),
+            16.0 * (1.0 - alpha) * (1.0 - 2.0 * alpha * alpha) /
+                (9.0 + 48.0 - alpha * (41.0 - 16.0) + 30.0 * (1.0 - alpha) * alpha * alpha));  // vNE, d = 2
+  // nu = 2 sqrt(pi) n sigma sqrt(T / m) and zeta = nu (1 - alpha^2) / 2 (1 + 3 a2 / 16) for n = sigma = T = m = 1
+  EXPECT_NEAR(j["cooling_state"]["collision_frequency0"].get<double>(), 2.0 * std::sqrt(std::numbers::pi), 1e-15);
+  EXPECT_NEAR(j["cooling_state"]["cooling_rate0_maxwell"].get<double>(),
+              std::sqrt(std::numbers::pi) * (1.0 - alpha * alpha), 1e-15);
+  EXPECT_NE(o.stdout_text.find("hard disks"), std::string::npos);
+  EXPECT_EQ(o.stdout_text.find("viscosity"), std::string::npos);
+  const Outcome run = granmc("run disks.toml");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.stderr_text.find("run.dimension = 2"), std::string::npos) << run.stderr_text;
+  EXPECT_TRUE(outputs().empty());
+}
+
 TEST_F(Cli, BathPrintsTheIntrudersFluxesAndSampledLaw) {  // 002 Figs. 1-2 (drivers/plot_bath.py)
   write("bath.toml", R"([run]
 method = "gillespie"

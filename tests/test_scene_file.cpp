@@ -656,3 +656,23 @@ TEST(SceneFile, OddKeysStayOnOneLine) {
   expect_rejected(kGas + "[collision]\n\"two\\nlines\" = 1\n", "collision.\"two\\u000alines\"", "unknown key");
   expect_rejected("\"with space\" = 1\n" + kGas, "\"with space\"", "unknown key");
 }
+
+TEST(SceneFile, GasDimension) {
+  EXPECT_EQ(parse_scene(kGas, kPath).run.dimension, 3);
+  EXPECT_EQ(parse_scene("[run]\nt_end = 1.0\ndt = 0.01\ndimension = 2\n" + kSpecies, kPath).run.dimension, 2);
+  expect_rejected("[run]\nt_end = 1.0\ndt = 0.01\ndimension = 4\n" + kSpecies, "run.dimension", "not 2 or 3");
+  expect_rejected("[run]\nt_end = 1.0\ndt = 0.01\ndimension = 2.0\n" + kSpecies, "run.dimension", "2 or 3");
+  expect_rejected(R"([run]
+method = "gillespie"
+t_end = 100
+dimension = 2
+[intruder]
+dimension = 1
+mass = 1.0
+restitution = 0.5
+bath = "gaussian"
+bath_a = 1.0
+bath_density = 1.0
+)",
+                  "run.dimension", "[intruder] dimension");
+}

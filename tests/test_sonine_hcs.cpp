@@ -13,14 +13,15 @@ using namespace granmc::theory;
 
 namespace {
 
-// HCS residuals E4 = mu_4 - (4/3) mu_2 <c^4>, E6 = mu_6 - 2 mu_2 <c^6>, units of sqrt(2 pi).
-double e4(double alpha, double a2, double a3) {
-  const SonineMoments m = hcs_collisional_moments(alpha, a2, a3);
-  return m.mu4 - 5.0 * m.mu2 * (1.0 + a2);
+// HCS residuals E4 = mu_4 - (4/d) mu_2 <c^4>, E6 = mu_6 - (6/d) mu_2 <c^6>, units of sqrt(2 pi), with
+// <c^4> = d(d+2)/4 (1 + a2), <c^6> = d(d+2)(d+4)/8 (1 + 3 a2 - a3): 5 and 26.25 for spheres, 4 and 18 for disks.
+double e4(double alpha, double a2, double a3, int d = 3) {
+  const SonineMoments m = hcs_collisional_moments(alpha, a2, a3, d);
+  return m.mu4 - (d == 3 ? 5.0 : 4.0) * m.mu2 * (1.0 + a2);
 }
-double e6(double alpha, double a2, double a3) {
-  const SonineMoments m = hcs_collisional_moments(alpha, a2, a3);
-  return m.mu6 - 26.25 * m.mu2 * (1.0 + 3.0 * a2 - a3);
+double e6(double alpha, double a2, double a3, int d = 3) {
+  const SonineMoments m = hcs_collisional_moments(alpha, a2, a3, d);
+  return m.mu6 - (d == 3 ? 26.25 : 18.0) * m.mu2 * (1.0 + 3.0 * a2 - a3);
 }
 
 // Value and first derivatives at (0, 0) of a function that is a polynomial of low degree in (a2, a3): the
@@ -47,10 +48,11 @@ TEST(SonineHcs, Mu2IsHaffRateWithFirstSonineCorrection) {
 }
 
 TEST(SonineHcs, LinearTruncationReproducesVanNoijeErnst) {
-  for (double alpha = 0.0; alpha <= 1.0 + 1e-12; alpha += 0.05) {
-    const Linear l = linearise([&](double x, double) { return e4(alpha, x, 0.0); });
-    EXPECT_NEAR(-l.a / l.b, hcs_a2(alpha), 1e-9) << "alpha = " << alpha;
-  }
+  for (const int d : {3, 2})
+    for (double alpha = 0.0; alpha <= 1.0 + 1e-12; alpha += 0.05) {
+      const Linear l = linearise([&](double x, double) { return e4(alpha, x, 0.0, d); });
+      EXPECT_NEAR(-l.a / l.b, hcs_a2(alpha, d), 1e-9) << "alpha = " << alpha << ", d = " << d;
+    }
 }
 
 TEST(SonineHcs, ElasticLimitIsMaxwellian) {
@@ -76,29 +78,64 @@ TEST(SonineHcs, ElasticLimitIsMaxwellian) {
 }
 
 TEST(SonineHcs, SecondSonineSolvesLinearisedMomentEquations) {
-  for (double alpha = 0.0; alpha < 1.0; alpha += 0.05) {
-    const Linear l4 = linearise([&](double x, double y) { return e4(alpha, x, y); });
-    const Linear l6 = linearise([&](double x, double y) { return e6(alpha, x, y); });
-    const SecondSonine s = hcs_second_sonine(alpha);
-    EXPECT_NEAR(l4.a + l4.b * s.a2 + l4.c * s.a3, 0.0, 1e-8) << "alpha = " << alpha;
-    EXPECT_NEAR(l6.a + l6.b * s.a2 + l6.c * s.a3, 0.0, 1e-7) << "alpha = " << alpha;
-    // Cramer's rule from the moment polynomials agrees with the closed form.
-    const double det = l4.b * l6.c - l4.c * l6.b;
-    EXPECT_NEAR((-l4.a * l6.c + l4.c * l6.a) / det, s.a2, 1e-8) << "alpha = " << alpha;
-    EXPECT_NEAR((-l4.b * l6.a + l4.a * l6.b) / det, s.a3, 1e-8) << "alpha = " << alpha;
-  }
+  for (const int d : {3, 2})
+    for (double alpha = 0.0; alpha < 1.0; alpha += 0.05) {
+      SCOPED_TRACE("alpha = " + std::to_string(alpha) + ", d = " + std::to_string(d));
+      const Linear l4 = linearise([&](double x, double y) { return e4(alpha, x, y, d); });
+      const Linear l6 = linearise([&](double x, double y) { return e6(alpha, x, y, d); });
+      const SecondSonine s = hcs_second_sonine(alpha, d);
+      EXPECT_NEAR(l4.a + l4.b * s.a2 + l4.c * s.a3, 0.0, 1e-8);
+      EXPECT_NEAR(l6.a + l6.b * s.a2 + l6.c * s.a3, 0.0, 1e-7);
+      // Cramer's rule from the moment polynomials agrees with the closed form.
+      const double det = l4.b * l6.c - l4.c * l6.b;
+      EXPECT_NEAR((-l4.a * l6.c + l4.c * l6.a) / det, s.a2, 1e-8);
+      EXPECT_NEAR((-l4.b * l6.a + l4.a * l6.b) / det, s.a3, 1e-8);
+    }
 }
 
 TEST(SonineHcs, NonlinearSolutionsHaveZeroResidual) {
-  for (double alpha = 0.0; alpha < 1.0; alpha += 0.05) {
-    const double x = hcs_a2_nonlinear(alpha);
-    EXPECT_NEAR(e4(alpha, x, 0.0), 0.0, 1e-14) << "alpha = " << alpha;
-    EXPECT_LT(std::abs(x - hcs_a2(alpha)), 0.02) << "alpha = " << alpha;  // the physical root
-    const SecondSonine s = hcs_second_sonine_nonlinear(alpha);
-    EXPECT_NEAR(e4(alpha, s.a2, s.a3), 0.0, 1e-14) << "alpha = " << alpha;
-    EXPECT_NEAR(e6(alpha, s.a2, s.a3), 0.0, 1e-13) << "alpha = " << alpha;
-    EXPECT_LT(std::abs(s.a2 - hcs_second_sonine(alpha).a2), 0.005) << "alpha = " << alpha;
+  for (const int d : {3, 2})
+    for (double alpha = 0.0; alpha < 1.0; alpha += 0.05) {
+      SCOPED_TRACE("alpha = " + std::to_string(alpha) + ", d = " + std::to_string(d));
+      // The physical roots (the others lie beyond -23 and +2): within these distances of the linear values,
+      // wider for disks, whose a2 is larger (0.044 at alpha = 0).
+      const double first = d == 3 ? 0.02 : 0.05, second = d == 3 ? 0.005 : 0.01;
+      const double x = hcs_a2_nonlinear(alpha, d);
+      EXPECT_NEAR(e4(alpha, x, 0.0, d), 0.0, 1e-14);
+      EXPECT_LT(std::abs(x - hcs_a2(alpha, d)), first);
+      const SecondSonine s = hcs_second_sonine_nonlinear(alpha, d);
+      EXPECT_NEAR(e4(alpha, s.a2, s.a3, d), 0.0, 1e-14);
+      EXPECT_NEAR(e6(alpha, s.a2, s.a3, d), 0.0, 1e-13);
+      EXPECT_LT(std::abs(s.a2 - hcs_second_sonine(alpha, d).a2), second);
+    }
+}
+
+/// Hard disks: the table of docs/derivations/sonine-hcs.md ("Hard disks"), printed to 8 decimals by
+/// `docs/derivations/sonine_hcs.py --dimension 2`: linear and nonlinear first Sonine, linear and nonlinear
+/// second Sonine (a2, a3).
+TEST(SonineHcs, DisksAgreeWithTheDerivationsTable) {
+  struct Row {
+    double alpha, vne, nl1, a2_2s, a3_2s, a2_2s_nl, a3_2s_nl;
+  };
+  const Row rows[] = {
+      {0.1, 0.25765930, 0.29059686, 0.13038575, -0.20564267, 0.12492829, -0.22253686},
+      {0.3, 0.17871181, 0.19021656, 0.11301607, -0.11937078, 0.11077182, -0.12974396},
+      {0.5, 0.08290155, 0.08458670, 0.06545421, -0.03710564, 0.06531892, -0.03942245},
+      {0.7, 0.00218629, 0.00218699, -0.00140185, -0.00927205, -0.00140094, -0.00927007},
+      {0.8, -0.02193928, -0.02189282, -0.02550735, -0.01035679, -0.02548223, -0.01046648},
+      {0.9, -0.02686163, -0.02683265, -0.02967104, -0.00936598, -0.02967858, -0.00950248},
+  };
+  for (const Row& r : rows) {
+    SCOPED_TRACE("alpha = " + std::to_string(r.alpha));
+    EXPECT_NEAR(hcs_a2(r.alpha, 2), r.vne, 5e-9);
+    EXPECT_NEAR(hcs_a2_nonlinear(r.alpha, 2), r.nl1, 5e-9);
+    EXPECT_NEAR(hcs_second_sonine(r.alpha, 2).a2, r.a2_2s, 5e-9);
+    EXPECT_NEAR(hcs_second_sonine(r.alpha, 2).a3, r.a3_2s, 5e-9);
+    EXPECT_NEAR(hcs_second_sonine_nonlinear(r.alpha, 2).a2, r.a2_2s_nl, 5e-9);
+    EXPECT_NEAR(hcs_second_sonine_nonlinear(r.alpha, 2).a3, r.a3_2s_nl, 5e-9);
   }
+  // mu_2 of disks is half that of spheres at every (a2, a3) (docs/derivations/sonine-hcs.md).
+  EXPECT_EQ(hcs_collisional_moments(0.6, 0.05, -0.02, 2).mu2, 0.5 * hcs_collisional_moments(0.6, 0.05, -0.02).mu2);
 }
 
 TEST(SonineHcs, ValuesFromExactDerivation) {

@@ -16,4 +16,6 @@ double enskog_chi(double phi, const std::vector<double>& x, const std::vector<do
   return 1.0 / q + 1.5 * a / (q * q) + 0.5 * a * a / (q * q * q);  // 000 eq. (3)
 }
 
+double enskog_chi_disks(double phi) noexcept { return (1.0 - 7.0 * phi / 16.0) / ((1.0 - phi) * (1.0 - phi)); }
+
 }  // namespace granmc

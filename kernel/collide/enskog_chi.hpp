@@ -12,4 +12,8 @@ namespace granmc {
 /// Monodisperse: chi = (1 - phi/2) / (1 - phi)^3.
 double enskog_chi(double phi, const std::vector<double>& x, const std::vector<double>& sigma, int i, int j);
 
+/// chi at contact of monodisperse hard disks (d = 2) with area fraction phi = pi n sigma^2 / 4, Henderson's
+/// form (Mol. Phys. 30 (1975) 971): (1 - 7 phi / 16) / (1 - phi)^2.
+double enskog_chi_disks(double phi) noexcept;
+
 }  // namespace granmc

@@ -22,7 +22,7 @@ constexpr const char* supported_list =
     "\"white-noise\", packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of "
     "dimension 1 or 2 (the needle) in a \"gaussian\" or \"power-law\" bath; "
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
-    "every gas scene";
+    "every gas scene; gases in d = 3 (run.dimension = 2 has its theory in `granmc theory`)";
 
 [[noreturn]] void refuse(const std::string& what) {
   throw PlanRefusal("this version of granmc cannot run " + what + " yet; " + supported_list);
@@ -155,6 +155,7 @@ RunPlan make_plan(const Scene& scene, Spread spread) {
     if (spread == Spread::particles) refuse_spread("an [intruder] scene");
     return {scheme, spread};
   }
+  if (scene.run.dimension != 3) refuse("a gas in d = 2 (run.dimension = 2, hard disks)");
   if (scene.run.method == Method::event) {
     EventPlan event = event_plan(scene);
     if (spread == Spread::particles) refuse_spread("a method other than \"dsmc\"");

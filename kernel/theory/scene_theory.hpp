@@ -7,10 +7,11 @@
 
 namespace granmc::theory {
 
-/// Monodisperse hard-sphere homogeneous cooling state (no thermostat, no shear).
+/// Monodisperse hard-sphere (or hard-disk, run.dimension = 2) homogeneous cooling state (no thermostat, no
+/// shear).
 struct CoolingStatePrediction {
   double alpha = 1.0;
-  double chi = 1.0;               // Carnahan-Starling chi (000 eq. 3); 1 when dilute
+  double chi = 1.0;               // Carnahan-Starling chi (000 eq. 3), Henderson's for disks; 1 when dilute
   double a2 = 0.0;                // first-Sonine a2 (van Noije and Ernst 1998)
   double a2_model_error = 0.0;    // |second - first Sonine a2|: the first-Sonine truncation error
   double a2_second_sonine = 0.0;  // second-Sonine a2 and a3 (docs/derivations/sonine-hcs.md)
@@ -19,7 +20,7 @@ struct CoolingStatePrediction {
   double cooling_rate0_first_sonine = 0.0;  // zeta at T(0) with the first-Sonine factor 1 + 3 a2 / 16
   double cooling_rate0_maxwell = 0.0;       // zeta at T(0) for a Maxwellian (a2 = a3 = 0)
   double cooling_rate_model_error = 0.0;    // relative: bound on |zeta(t) / zeta_theory(t) - 1| (docs/physics.md)
-  double collision_frequency0 = 0.0;        // nu = 4 sqrt(pi) n sigma^2 chi sqrt(T / m) at T(0), Maxwellian
+  double collision_frequency0 = 0.0;        // nu at T(0), Maxwellian (theory::collision_frequency)
   std::vector<double> temperature;          // Haff's law with cooling_rate0 at the sample times
 };
 

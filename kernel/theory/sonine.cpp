@@ -5,22 +5,29 @@
 
 namespace granmc::theory {
 
-namespace {
-constexpr double d = 3.0;
-}
-
-double hcs_a2(double alpha) noexcept {
+double hcs_a2(double alpha, int dimension) noexcept {
+  const double d = dimension;
   return 16.0 * (1.0 - alpha) * (1.0 - 2.0 * alpha * alpha) /
          (9.0 + 24.0 * d - alpha * (41.0 - 8.0 * d) + 30.0 * (1.0 - alpha) * alpha * alpha);
 }
 
-double white_noise_a2(double alpha) noexcept {
+double white_noise_a2(double alpha, int dimension) noexcept {
+  const double d = dimension;
   return 16.0 * (1.0 - alpha) * (1.0 - 2.0 * alpha * alpha) /
          (73.0 + 56.0 * d - 3.0 * alpha * (35.0 + 8.0 * d) + 30.0 * (1.0 - alpha) * alpha * alpha);
 }
 
+double collision_frequency(double density, double diameter, double mass, double temperature, double chi,
+                           int dimension) noexcept {
+  const double line = (dimension == 2 ? 2.0 : 4.0) * std::sqrt(std::numbers::pi) * density * diameter;
+  return (dimension == 2 ? line : line * diameter) * chi * std::sqrt(temperature / mass);  // sigma^(d-1)
+}
+
 double cooling_rate(double alpha, double density, double diameter, double mass, double temperature, double chi,
-                    double a2) noexcept {
+                    double a2, int dimension) noexcept {
+  if (dimension == 2)
+    return std::sqrt(std::numbers::pi) * density * diameter * chi * (1.0 - alpha * alpha) *
+           std::sqrt(temperature / mass) * (1.0 + 3.0 * a2 / 16.0);
   return 4.0 * std::sqrt(std::numbers::pi) / 3.0 * density * diameter * diameter * chi * (1.0 - alpha * alpha) *
          std::sqrt(temperature / mass) * (1.0 + 3.0 * a2 / 16.0);
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Beyond-linear Sonine estimates of the homogeneous cooling state (HCS) of smooth inelastic hard spheres,
-// d = 3, constant restitution alpha, Boltzmann equation.  Scaled distribution
+// d = 3, or hard disks, d = 2 (`dimension`; the disks' forms in docs/derivations/sonine-hcs.md, "Hard
+// disks"), constant restitution alpha, Boltzmann equation.  For spheres the scaled distribution is
 //   F(c) = phi(c) [1 + a2 S2(c^2) + a3 S3(c^2)],  c = v / v0,  v0 = sqrt(2T/m),  phi = pi^-3/2 exp(-c^2),
 //   S2(x) = x^2/2 - 5x/2 + 15/8,  S3(x) = -x^3/6 + 7x^2/4 - 35x/8 + 35/16   (Laguerre L^(1/2)_p),
 // so <c^4> = (15/4)(1 + a2), <c^6> = (105/8)(1 + 3 a2 - a3).
@@ -18,13 +19,13 @@ namespace granmc::theory {
 struct SonineMoments {
   double mu2, mu4, mu6;
 };
-SonineMoments hcs_collisional_moments(double alpha, double a2, double a3) noexcept;
+SonineMoments hcs_collisional_moments(double alpha, double a2, double a3, int dimension = 3) noexcept;
 
 /// Approximation 1 ("nonlinear first Sonine", in the spirit of Brilliantov & Poschel, PRE 61, 2809 (2000)):
 /// a3 = 0 and the p = 4 HCS equation mu_4(a2) = 5 mu_2(a2) (1 + a2) kept exactly, a cubic in a2; returns
 /// its root continuously connected to a2 = 0 at alpha = 1 (the other two real roots, below -23 and above +2.2, are
 /// unphysical). Solved by Newton from the linear (van Noije-Ernst) value; 0 <= alpha <= 1.
-double hcs_a2_nonlinear(double alpha) noexcept;
+double hcs_a2_nonlinear(double alpha, int dimension = 3) noexcept;
 
 /// Approximation 2, LINEAR second Sonine (Brilliantov & Poschel, EPL 74, 424 (2006); Santos & Montanero,
 /// Granular Matter 11, 157 (2009)): a3 kept, the p = 4 and p = 6 HCS equations linearised in (a2, a3)
@@ -34,20 +35,20 @@ double hcs_a2_nonlinear(double alpha) noexcept;
 struct SecondSonine {
   double a2, a3;
 };
-SecondSonine hcs_second_sonine(double alpha) noexcept;
+SecondSonine hcs_second_sonine(double alpha, int dimension = 3) noexcept;
 
 /// Nonlinear second Sonine: both HCS equations (p = 4, 6) kept exactly for F = phi (1 + a2 S2 + a3 S3);
 /// Newton in (a2, a3) from the linear solution.  Differs from hcs_second_sonine by < 1e-5 in a2 for
 /// alpha >= 0.6 (docs/derivations/sonine-hcs.md).
-SecondSonine hcs_second_sonine_nonlinear(double alpha) noexcept;
+SecondSonine hcs_second_sonine_nonlinear(double alpha, int dimension = 3) noexcept;
 
 /// mu_2(a2, a3) / mu_2(0, 0) = zeta* / zeta*_Maxwell = 1 + 3 a2/16 + a3/64 + 9 a2^2/1024 + 15 a2 a3/2048
-/// + 35 a3^2/16384 (exact for the two-term Sonine F; independent of alpha).  The first-order factor used by
-/// theory::cooling_rate is 1 + 3 a2/16.
+/// + 35 a3^2/16384 (exact for the two-term Sonine F; independent of alpha, and the same for disks).  The first-order
+/// factor used by theory::cooling_rate is 1 + 3 a2/16.
 double hcs_cooling_rate_factor(double a2, double a3) noexcept;
 
 /// Model error of the first-Sonine a2 (theory::hcs_a2): its shift to the second-Sonine value,
 /// |hcs_second_sonine(alpha).a2 - hcs_a2(alpha)|, dominated by the neglected a3 (docs/physics.md).
-double hcs_a2_model_error(double alpha) noexcept;
+double hcs_a2_model_error(double alpha, int dimension = 3) noexcept;
 
 }  // namespace granmc::theory
