@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
-#include <variant>
 #include <vector>
 
 #include "kernel/observe/gas_observation.hpp"
@@ -26,13 +25,8 @@ ReplicaSeries run_dsmc_replica(Sim& sim, const Scene& scene, const std::vector<d
   std::vector<double> initial_majorant = sim.omega_max();
   ReplicaSeries series;
   series.species.resize(scene.species.size());
-  std::size_t first = 0;
-  if (const ReplicaInFlight* earlier = restored_in_flight(options, replica)) {
-    sim.restore(std::get<DsmcSnapshot>(earlier->state));
-    series = earlier->series;
-    initial_majorant = earlier->initial_majorant;
-    first = static_cast<std::size_t>(earlier->samples_taken);
-  }
+  const std::size_t first = resume_in_flight<DsmcSnapshot>(options, replica, sim, series);
+  if (first > 0) initial_majorant = restored_in_flight(options, replica)->initial_majorant;
   for (std::size_t k = first; k < times.size(); ++k) {
     sim.advance_to(times[k]);
     const GasTotals summed = sim.observe(series, k >= first_stationary_sample(times.size()));

@@ -3,7 +3,6 @@
 // sample times.
 #include <cstddef>
 #include <cstdint>
-#include <variant>
 #include <vector>
 
 #include "kernel/observe/gas_observation.hpp"
@@ -20,13 +19,7 @@ ReplicaSeries run_event_replica(const Scene& scene, std::uint64_t replica, const
   BasicEventScheme<Real, Kernel> sim(scene, replica, kernel);
   ReplicaSeries series;
   series.species.resize(1);
-  std::size_t first = 0;
-  if (const ReplicaInFlight* earlier = restored_in_flight(options, replica)) {
-    sim.restore(std::get<EventSnapshot>(earlier->state));
-    series = earlier->series;
-    first = static_cast<std::size_t>(earlier->samples_taken);
-  }
-  for (std::size_t k = first; k < times.size(); ++k) {
+  for (std::size_t k = resume_in_flight<EventSnapshot>(options, replica, sim, series); k < times.size(); ++k) {
     sim.advance_to(times[k]);
     observe_gas(scene, sim.state(), series, k >= first_stationary_sample(times.size()));
     series.collisions.push_back(static_cast<double>(sim.tally().collisions));

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
+#include <variant>
 
 #include "kernel/core/ranks.hpp"
 #include "kernel/observe/gas_series.hpp"
@@ -52,6 +53,18 @@ struct RunOptions {
 /// Replica `replica`'s state from an earlier run to go on from (RunOptions::restored_in_flight), or null.
 inline const ReplicaInFlight* restored_in_flight(const RunOptions& options, std::uint64_t replica) {
   return options.restored_in_flight ? options.restored_in_flight(replica) : nullptr;
+}
+
+/// Replica `replica` goes on from the state options.restored_in_flight gives, if there is one: `sim` put back
+/// in it (Scheme::restore of a Snapshot) and `series` the observations so far; returns the index of the next
+/// sample time (0 without such a state).
+template <class Snapshot, class Scheme>
+std::size_t resume_in_flight(const RunOptions& options, std::uint64_t replica, Scheme& sim, ReplicaSeries& series) {
+  const ReplicaInFlight* earlier = restored_in_flight(options, replica);
+  if (earlier == nullptr) return 0;
+  sim.restore(std::get<Snapshot>(earlier->state));
+  series = earlier->series;
+  return static_cast<std::size_t>(earlier->samples_taken);
 }
 
 /// Whether replica `replica` hands its state to options.on_in_flight after observation k of `sample_times`

@@ -3,7 +3,6 @@
 // times.
 #include <cstddef>
 #include <cstdint>
-#include <variant>
 #include <vector>
 
 #include "kernel/observe/weighted_observation.hpp"
@@ -21,12 +20,7 @@ ReplicaSeries run_swpm_replica(const Scene& scene, std::uint64_t replica, const 
   ReplicaSeries series;
   series.species.resize(1);
   series.weighted.emplace();
-  std::size_t first = 0;
-  if (const ReplicaInFlight* earlier = restored_in_flight(options, replica)) {
-    sim.restore(std::get<SwpmSnapshot>(earlier->state));
-    series = earlier->series;
-    first = static_cast<std::size_t>(earlier->samples_taken);
-  }
+  const std::size_t first = resume_in_flight<SwpmSnapshot>(options, replica, sim, series);
   WeightedSeries& weighted = *series.weighted;
   for (std::size_t k = first; k < times.size(); ++k) {
     sim.advance_to(times[k]);
