@@ -47,8 +47,9 @@ struct JobResult {
 /// writes `outputs` (creating their directories). The progress line shows on rank 0 when stderr is a terminal, unless
 /// `quiet`. Collective under MPI. Throws std::exception on failure; report it with run_failure. With plan.spread =
 /// Spread::particles, every replica is one system over all ranks instead (schemes/rank_wave_backend.hpp), the replicas
-/// one after another on one thread per rank. With `checkpoints` (one process only), the run restores and
-/// checkpoints replicas through it (drivers/run_checkpoints.hpp) and throws RunInterrupted when a signal stopped it.
+/// one after another on one thread per rank. With `checkpoints` (not with Spread::particles), the run restores and
+/// checkpoints this rank's replicas through it (drivers/run_checkpoints.hpp), keeps them there before the gather,
+/// and throws RunInterrupted when a signal stopped it.
 JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet,
                   int threads_per_replica = 1, RunCheckpoints* checkpoints = nullptr);
 

@@ -5,8 +5,8 @@
 
 For each of four scenes (the time-stepped scheme, the event scheme under white noise, weighted particles,
 the Gillespie intruder; a few seconds each on 2 cores), runs it once uninterrupted, then again with
---checkpoint-every 0 (a checkpoint at every sample: the time-stepped replicas are kept mid-run, the others
-whole), killing it with SIGKILL after a random 0.1-1.5 s and resuming it each time (--resume, alternating 2
+--checkpoint-every 0 (a checkpoint at every sample: the gas schemes' replicas are kept mid-run, the
+intruder's whole), killing it with SIGKILL after a random 0.1-1.5 s and resuming it each time (--resume, alternating 2
 threads and 1), until a run completes (the last of --kills attempts runs to the end); then compares the two HDF5 files object by object
 (tests/same_bits.py: every dataset and attribute but those of the machine and the build) and the two
 summaries.
