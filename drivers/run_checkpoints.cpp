@@ -5,8 +5,9 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
-#include <regex>
+#include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 
 #include "io/build_id.hpp"
@@ -24,6 +25,19 @@ extern "C" void on_stop_signal(int signal) {
   std::signal(signal, SIG_DFL);
 }
 
+/// BASE when `name` is BASE.K-of-R (K and R decimal digits), else nothing.
+std::optional<std::string> rank_file_base(const std::string& name) {
+  const std::size_t of = name.rfind("-of-");
+  const std::size_t dot = of == std::string::npos ? std::string::npos : name.rfind('.', of);
+  if (dot == std::string::npos) return std::nullopt;
+  const auto digits = [](std::string_view s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  const std::string_view whole(name);
+  if (!digits(whole.substr(dot + 1, of - dot - 1)) || !digits(whole.substr(of + 4))) return std::nullopt;
+  return name.substr(0, dot);
+}
+
 }  // namespace
 
 std::string checkpoint_path(const std::string& hdf5) { return hdf5 + ".checkpoint"; }
@@ -34,17 +48,14 @@ std::string checkpoint_file(const std::string& base, int rank, int ranks) {
 }
 
 std::vector<std::string> checkpoint_files(const std::string& path) {
-  static const std::regex rank_file(R"((.*)\.[0-9]+-of-[0-9]+)");
-  std::smatch m;
-  const std::string base = std::regex_match(path, m, rank_file) ? m[1].str() : path;
+  const std::string base = rank_file_base(path).value_or(path);
   const std::filesystem::path dir = std::filesystem::path(base).parent_path();
   const std::string name = std::filesystem::path(base).filename().string();
   std::vector<std::string> files;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(dir.empty() ? "." : dir, error)) {
     const std::string file = entry.path().filename().string();
-    if (file == name || (std::regex_match(file, m, rank_file) && m[1].str() == name))
-      files.push_back((dir / file).string());
+    if (file == name || rank_file_base(file) == name) files.push_back((dir / file).string());
   }
   std::sort(files.begin(), files.end());
   return files;

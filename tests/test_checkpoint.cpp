@@ -85,6 +85,9 @@ TEST_F(Checkpoints, InterruptedRunResumesToTheFilesOfAnUninterruptedOne) {
   EXPECT_EQ(other_seed.status, 2);
   EXPECT_NE(other_seed.stderr_text.find("seed 5"), std::string::npos) << other_seed.stderr_text;
 
+  // A rank's file of the same run (here a copy) is read with it, and a name that only looks like one is not.
+  fs::copy_file(dir_ / "part.h5.checkpoint", dir_ / "part.h5.checkpoint.1-of-2");
+  write("part.h5.checkpoint.x-of-2", "not a checkpoint");
   // On one thread where the interrupted run had two: each replica is the same on any thread count.
   const Outcome resumed =
       granmc("run s.toml --out part.h5 --summary part.json --resume part.h5.checkpoint --threads 1");
@@ -93,7 +96,9 @@ TEST_F(Checkpoints, InterruptedRunResumesToTheFilesOfAnUninterruptedOne) {
                                      std::to_string(in_flight) + " more going on"),
             std::string::npos)
       << resumed.stdout_text;
-  EXPECT_FALSE(exists("part.h5.checkpoint"));  // the files replace it
+  EXPECT_FALSE(exists("part.h5.checkpoint"));  // the files replace it, and its ranks' files
+  EXPECT_FALSE(exists("part.h5.checkpoint.1-of-2"));
+  EXPECT_TRUE(exists("part.h5.checkpoint.x-of-2"));
   EXPECT_EQ(numbers("part.json"), numbers("full.json"));
 }
 
