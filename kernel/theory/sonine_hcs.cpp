@@ -82,14 +82,15 @@ Residual hcs_residual(double alpha, double a2, double a3, int d) noexcept {
   return {m.mu4 - f4(d) * m.mu2 * (1.0 + a2), m.mu6 - f6(d) * m.mu2 * (1.0 + 3.0 * a2 - a3)};
 }
 
-/// sum_k c[k] a^k, from the highest power down (the order the closed forms below were written in).
+/// sum_k c[k] a^k, from the highest power down (the order the closed forms below were written in); the
+/// powers a, a^2 = a a, a^3 = a^2 a, ... (1 a and c[0] 1 are exact).
 template <std::size_t n>
 double descending(const std::array<double, n>& c, double a) noexcept {
   std::array<double, n> power{};
   power[0] = 1.0;
-  for (std::size_t k = 1; k < n; ++k) power[k] = k == 1 ? a : power[k - 1] * a;
+  for (std::size_t k = 1; k < n; ++k) power[k] = power[k - 1] * a;
   double sum = c[n - 1] * power[n - 1];
-  for (std::size_t k = n - 1; k-- > 0;) sum += k == 0 ? c[0] : c[k] * power[k];
+  for (std::size_t k = n - 1; k-- > 0;) sum += c[k] * power[k];
   return sum;
 }
 
