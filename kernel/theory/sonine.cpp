@@ -25,11 +25,10 @@ double collision_frequency(double density, double diameter, double mass, double 
 
 double cooling_rate(double alpha, double density, double diameter, double mass, double temperature, double chi,
                     double a2, int dimension) noexcept {
-  if (dimension == 2)
-    return std::sqrt(std::numbers::pi) * density * diameter * chi * (1.0 - alpha * alpha) *
-           std::sqrt(temperature / mass) * (1.0 + 3.0 * a2 / 16.0);
-  return 4.0 * std::sqrt(std::numbers::pi) / 3.0 * density * diameter * diameter * chi * (1.0 - alpha * alpha) *
-         std::sqrt(temperature / mass) * (1.0 + 3.0 * a2 / 16.0);
+  const double prefactor = dimension == 2 ? std::sqrt(std::numbers::pi) : 4.0 * std::sqrt(std::numbers::pi) / 3.0;
+  const double line = prefactor * density * diameter;
+  return (dimension == 2 ? line : line * diameter) * chi * (1.0 - alpha * alpha) * std::sqrt(temperature / mass) *
+         (1.0 + 3.0 * a2 / 16.0);  // sigma^(d-1)
 }
 
 double haff_temperature(double t, double temperature0, double cooling_rate0) noexcept {
