@@ -133,6 +133,13 @@ std::vector<OutputRecord> declare() {
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.ranks); });
   add("particles", K::count, S, "", "simulated particles per replica, all species",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(total_particles(o.scene)); });
+  add("dimension", K::count, S, "",
+      "a gas's dimension d, run.dimension: 3 hard spheres, 2 hard disks (temperatures m <V^2> / d, cumulants of "
+      "d dimensions); absent for an intruder",
+      [](const RunOutput& o, std::size_t) -> Value {
+        if (o.scene.intruder) return {};
+        return static_cast<std::uint64_t>(o.scene.run.dimension);
+      });
   add("collisions", K::count, S, "", "accepted collisions, all replicas",
       [](const RunOutput& o, std::size_t) { return o.report.collisions; });
   add("candidates", K::count, S, "", "candidate pairs tested, all replicas",

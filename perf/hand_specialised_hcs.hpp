@@ -150,7 +150,9 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
                     prefactor * (0.25 * xsimd::sqrt(SimdDouble::load_unaligned(&g2s[k]))) * (1.0 + rounding_margin))
                 << k;
     const std::uint64_t full_test = shared | (passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1));
-    const std::size_t passed = selected_unit_vectors(full_test, d.dir1, d.dir2, which, sx, sy, sz);
+    const std::size_t passed =
+        selected_directions(full_test, d.dir1, d.dir2, which, sx, sy, sz,
+                            [](auto u1, auto u2, auto x, auto y, auto z) { unit_vectors(u1, u2, x, y, z); });
     // sigma-hat and g.sigma of the candidates that share no particle, from the screen's velocities, a
     // register at a time (as the stage)
     for (std::size_t e = 0; e < passed; ++e) {
@@ -163,8 +165,8 @@ HandTally hand_collide(HandRecord* v, std::uint64_t n, double& omega_max, std::u
     for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
       const auto at = [e](const Lanes& x) { return SimdDouble::load_unaligned(&x[e]); };
       SimdDouble x, y, z, gs;
-      impact_direction_components(at(gx_passed), at(gy_passed), at(gz_passed), xsimd::sqrt(at(g2_passed)), at(sx),
-                                  at(sy), at(sz), x, y, z, gs);
+      impact_direction_components<3>(at(gx_passed), at(gy_passed), at(gz_passed), xsimd::sqrt(at(g2_passed)), at(sx),
+                                     at(sy), at(sz), x, y, z, gs);
       x.store_unaligned(&sigma_x[e]), y.store_unaligned(&sigma_y[e]), z.store_unaligned(&sigma_z[e]);
       gs.store_unaligned(&g_sigma_passed[e]);
     }

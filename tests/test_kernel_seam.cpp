@@ -26,6 +26,7 @@ namespace {
 /// B = rate (001 eq. 7), the example kernel of docs/ARCHITECTURE.md.
 struct ConstantRate {
   static constexpr const char* name = "constant-rate";
+  static constexpr int dimension = 3;
   static constexpr const char* explanation = "a constant rate, written as a new kernel";
   static constexpr double lambda = 0.0;  // omega ~ |g|^0
   template <class Scene>

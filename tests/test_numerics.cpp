@@ -309,8 +309,8 @@ TEST(Numerics, MaxwellianStartIsTheSameForAnyPartOfTheParticles) {
   const RandomStream rng(2026, 3);
   const double width = 0.75;
   SpeciesStore whole(1000), part(301);
-  maxwellian_velocities(whole, rng, 1, 0, width);
-  maxwellian_velocities(part, rng, 1, 123, width);
+  maxwellian_velocities(whole, rng, 1, 0, width, 3);
+  maxwellian_velocities(part, rng, 1, 123, width, 3);
   for (std::size_t k = 0; k < part.size(); ++k) {
     ASSERT_EQ(part.velocity(k).x, whole.velocity(123 + k).x) << k;
     ASSERT_EQ(part.velocity(k).y, whole.velocity(123 + k).y) << k;

@@ -1,5 +1,5 @@
 // White noise in the time-stepped scheme (effects/white_noise.hpp) against what is exact:
-//  - alone (elastic collisions conserve energy): E T = (1 - 1/n)(T0 + 2 beta t) for every dt;
+//  - alone (elastic collisions conserve energy): E T = (1 - 1/n)(T0 + 2 beta t) for every dt, spheres and disks;
 //  - with Maxwell pseudomolecules: the first-order splitting makes T obey T_{k+1} = e^{-kappa dt} T_k
 //    + 2 beta dt in expectation (theory::maxwell_temperature_splitting), and its steady state is too hot
 //    by about kappa dt / 2 compared with 001 eqs. (16-17), which the time-step-free scheme meets
@@ -66,19 +66,51 @@ MeanCI at_sample(const RunResult& r, std::size_t k) {
 
 }  // namespace
 
-TEST(WhiteNoise, AloneHeatsLinearly) {
-  const Scene s = example3(0.5, 1.0, 64, 1000);
+namespace {
+
+/// White noise alone on an elastic gas of n = 64 particles in `dimension` d: E T = (1 - 1/n)(T0 + 2 beta t).
+/// Bound: the internal energy of n particles under white noise and elastic collisions is that of n free
+/// particles kicked by the noise (collisions conserve it, and the noise's effect depends on it alone), so T is
+/// exactly a Maxwellian temperature with d (n - 1) degrees of freedom: relative standard deviation
+/// sqrt(2 / (d (n - 1))) per replica.
+void expect_linear_heating(const Scene& s, int dimension) {
+  ASSERT_EQ(s.species[0].particles, 64);
   const RunResult r = run_scene(s, {});
   for (std::size_t k = 0; k < r.times.size(); ++k) {
     const MeanCI t = at_sample(r, k);
-    // Bound: the internal energy of n = 64 particles under white noise and elastic collisions is that of n free
-    // particles kicked by the noise (collisions conserve it, and the noise's effect depends on it alone), so T is
-    // exactly a Maxwellian temperature with 3 (n - 1) degrees of freedom: relative standard deviation
-    // sqrt(2 / (3 (n - 1))) per replica.
     const double expected = (1.0 - 1.0 / 64.0) * (1.0 + 2.0 * r.times[k]);
-    const double sigma = expected * std::sqrt(2.0 / (3.0 * 63.0));
+    const double sigma = expected * std::sqrt(2.0 / (dimension * 63.0));
     EXPECT_TRUE(within_ci("T", t, expected, expected_ci_bound(sigma, s.run.replicas))) << "t = " << r.times[k];
   }
+}
+
+}  // namespace
+
+TEST(WhiteNoise, AloneHeatsLinearly) { expect_linear_heating(example3(0.5, 1.0, 64, 1000), 3); }
+
+TEST(WhiteNoise, AloneHeatsElasticDisksLinearlyInThePlane) {
+  // Elastic hard disks: the same exact law, dT/dt = 2 beta m in every dimension (each of the d components gains
+  // 2 beta per unit time, T = m <V^2> / d). A kick along z would heat the plane's temperature 1.5 times faster.
+  expect_linear_heating(scene_from_toml(R"(
+    [run]
+    seed = 32
+    replicas = 1000
+    t_end = 8.0
+    dt = 0.5
+    samples = 16
+    dimension = 2
+
+    [[species]]
+    particles = 64
+
+    [collision]
+    restitution = 1.0
+
+    [thermostat]
+    kind = "white-noise"
+    beta = 1.0
+  )"),
+                        2);
 }
 
 TEST(WhiteNoise, MaxwellSplittingErrorIsTheExpectedOne) {

@@ -51,15 +51,19 @@ void check_shapes(const RunResult& result) {
 }
 
 /// Phi_i(v*) = counts / (N_i samples shell volume) for every replica: the scaled speed distribution,
-/// normalised so that its integral over d^3 v* is the fraction of particles inside the radius.
+/// normalised so that its integral over d^d v* is the fraction of particles inside the radius (shells of
+/// volume 4 pi (b^3 - a^3) / 3 for spheres, annuli of area pi (b^2 - a^2) for disks).
 std::vector<std::vector<double>> speed_distributions(const RunResult& result, std::size_t i,
-                                                     const std::vector<double>& edges, double particles) {
+                                                     const std::vector<double>& edges, double particles,
+                                                     int dimension) {
   std::vector<std::vector<double>> phi;
   for (const ReplicaSeries& s : result.replicas) {
     const std::vector<double>& counts = s.species[i].speed_counts;
     std::vector<double> p(counts.size());
     for (std::size_t k = 0; k < counts.size(); ++k) {
-      const double volume = 4.0 * std::numbers::pi / 3.0 * (std::pow(edges[k + 1], 3) - std::pow(edges[k], 3));
+      const double volume = dimension == 3
+                                ? 4.0 * std::numbers::pi / 3.0 * (std::pow(edges[k + 1], 3) - std::pow(edges[k], 3))
+                                : std::numbers::pi * (std::pow(edges[k + 1], 2) - std::pow(edges[k], 2));
       p[k] = counts[k] / (particles * static_cast<double>(s.histogram_samples) * volume);
     }
     phi.push_back(std::move(p));
@@ -67,8 +71,8 @@ std::vector<std::vector<double>> speed_distributions(const RunResult& result, st
   return phi;
 }
 
-/// T + (sum_i x_i m_i) |V|^2 / 3 per replica and sample, V = P / M the flow velocity: the mixture's
-/// sum_i x_i m_i <|v|^2> / 3 about the origin (the cross terms sum_i x_i m_i (<v>_i - V) vanish by V's
+/// T + (sum_i x_i m_i) |V|^2 / d per replica and sample, V = P / M the flow velocity: the mixture's
+/// sum_i x_i m_i <|v|^2> / d about the origin (the cross terms sum_i x_i m_i (<v>_i - V) vanish by V's
 /// definition).
 MeanCISeries uncentred_temperature(const Scene& scene, const RunResult& result) {
   double mass = 0.0, mean_mass = 0.0;  // M = sum_i m_i N_i; sum_i x_i m_i
@@ -80,7 +84,7 @@ MeanCISeries uncentred_temperature(const Scene& scene, const RunResult& result) 
   for (std::size_t r = 0; r < t.size(); ++r) {
     const ReplicaSeries& s = result.replicas[r];
     for (std::size_t k = 0; k < s.temperature.size(); ++k)
-      t[r].push_back(s.temperature[k] + mean_mass * norm2((1.0 / mass) * s.momentum[k]) / 3.0);
+      t[r].push_back(s.temperature[k] + mean_mass * norm2((1.0 / mass) * s.momentum[k]) / scene.run.dimension);
   }
   return per_index(
       t.size(), result.times.size(), [&](std::size_t r) -> const auto& { return t[r]; });
@@ -120,8 +124,8 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
       if (report.speed_shell_edges.empty())
         for (std::size_t k = 0; k <= shells; ++k)
           report.speed_shell_edges.push_back(scene.histogram.radius * static_cast<double>(k) / shells);
-      const auto phi =
-          speed_distributions(result, i, report.speed_shell_edges, static_cast<double>(scene.species[i].particles));
+      const auto phi = speed_distributions(result, i, report.speed_shell_edges,
+                                           static_cast<double>(scene.species[i].particles), scene.run.dimension);
       sp.speed_distribution = per_index(
           phi.size(), shells, [&](std::size_t r) -> const auto& { return phi[r]; });
       if (scene.species.size() == 1) {  // the tail exponent of one species' f (001 eqs. 19-21, 38)

@@ -6,9 +6,10 @@
 // A time-stepped kernel (the impact-direction form of 000 sec. 3) gives the velocity-dependent factor of the rate
 // omega_kl of a pair with direction sigma-hat; the pair's constant prefactor lives in PairCoefficients. It has
 // lambda (omega scales as |g|^lambda, so a physical rate is u^lambda times the stored-unit one),
-// rate(g.sigma, |g|^2), bound(U) >= rate for relative speeds up to U, and from_scene(scene) (the kernel's
-// parameters). Every kernel weighs sigma-hat by Theta(g.sigma) (g.sigma), so its mean over sigma-hat uniform
-// on the sphere is mean_rate(|g|^2) = |g|^lambda / 4 (the mean of Theta(g.sigma) (g.sigma) is |g| / 4), with
+// rate(g.sigma, |g|^2), bound(U) >= rate for relative speeds up to U, from_scene(scene) (the kernel's
+// parameters) and dimension (3, or 2 for disks). Every kernel weighs sigma-hat by Theta(g.sigma) (g.sigma),
+// so its mean over sigma-hat uniform on the sphere is mean_rate(|g|^2) = |g|^lambda / 4 (the mean of
+// Theta(g.sigma) (g.sigma) is |g| / 4; |g| / pi on the circle), with
 // mean_bound(U) >= mean_rate up to U (schemes/collision_stage.hpp accepts a pair with probability
 // mean_rate / omega_max). mean_rate takes a double or an xsimd batch of them (the stage screens a batch's
 // candidates in SIMD), and screen_candidates says whether that screen can reject any: false when the mean
@@ -30,6 +31,7 @@ namespace granmc {
 template <class K>
 concept SteppedKernel = requires(const K& kernel, double g_sigma, double g2, double speed, const Scene& scene) {
   { K::name } -> std::convertible_to<const char*>;
+  { K::dimension } -> std::convertible_to<int>;
   { K::explanation } -> std::convertible_to<const char*>;
   { kernel.lambda } -> std::convertible_to<double>;
   { K::screen_candidates } -> std::convertible_to<bool>;

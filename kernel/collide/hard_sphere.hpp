@@ -1,26 +1,37 @@
 #pragma once
-// Hard spheres, in both forms of collide/collision_kernel.hpp.
-//  - Time-stepped (the Enskog operator, 000 eq. 2): a pair (k, l) with direction sigma-hat collides at the rate
-//    omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) |g.sigma| (000 sec. 3, step 2). The evaluator gives
-//    the velocity-dependent factor; the pair's constant prefactor 4 pi sigma_ij^2 n_j chi_ij lives in
-//    PairCoefficients.
-//  - Event (001 eq. 6): B = rate |u|, e uniform; a candidate is kept with probability |u| / U_max, the test
-//    u < |u| / U_max needing no transformation of u.
+// Hard spheres (d = 3) and hard disks (d = 2), in both forms of collide/collision_kernel.hpp.
+//  - Time-stepped (the Enskog operator, 000 eq. 2, in d dimensions): a pair (k, l) with direction sigma-hat
+//    uniform on the unit sphere (circle) collides at the rate omega_kl = S_d sigma_ij^(d-1) n_j chi_ij
+//    Theta(g.sigma) |g.sigma|, with S_d the measure of the unit sphere (4 pi; 2 pi for the circle; 000 sec. 3,
+//    step 2). The evaluator gives the velocity-dependent factor; the pair's constant prefactor lives in
+//    PairCoefficients. The mean of Theta(g.sigma) (g.sigma) over sigma-hat uniform is |g| / 4 for d = 3 and
+//    |g| / pi for d = 2 (the integral of cos over a half circle, 2, over 2 pi), so the total rate per pair is
+//    pi sigma^2 n chi |g| (spheres) and 2 sigma n chi |g| (disks).
+//  - Event (001 eq. 6, spheres only): B = rate |u|, e uniform; a candidate is kept with probability
+//    |u| / U_max, the test u < |u| / U_max needing no transformation of u.
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <span>
 
 #include "kernel/collide/collision_kernel.hpp"
 
 namespace granmc {
 
-struct HardSphere {
+/// Hard cores in d = 3 (spheres) or d = 2 (disks).
+template <int d>
+struct HardCore {
+  static_assert(d == 2 || d == 3);
+  static constexpr int dimension = d;
   static constexpr double lambda = 1.0;
-  static constexpr const char* name = "hard-sphere";
+  static constexpr const char* name = d == 3 ? "hard-sphere" : "hard-disk";
   static constexpr const char* explanation =
-      "hard spheres: omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3)";
+      d == 3 ? "hard spheres: omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3)"
+             : "hard disks: omega_kl = 2 pi sigma_ij n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3 in d = 2)";
+  /// The mean of Theta(g.sigma) (g.sigma) / |g| over sigma-hat uniform on the unit sphere (circle).
+  static constexpr double mean_g_sigma = d == 3 ? 0.25 : std::numbers::inv_pi;
   template <class Scene>
-  static constexpr HardSphere from_scene(const Scene&) noexcept {
+  static constexpr HardCore from_scene(const Scene&) noexcept {
     return {};
   }
   /// Rate factor for normal relative speed g_sigma = g.sigma-hat > 0.
@@ -30,15 +41,18 @@ struct HardSphere {
   template <class T>
   static T mean_rate(const T& g2) noexcept {
     using std::sqrt;  // xsimd's for a batch
-    return 0.25 * sqrt(g2);
+    return mean_g_sigma * sqrt(g2);
   }
-  static constexpr double mean_bound(double relative_speed) noexcept { return 0.25 * relative_speed; }
+  static constexpr double mean_bound(double relative_speed) noexcept { return mean_g_sigma * relative_speed; }
 
   static constexpr bool constant_rate = false;
   template <std::size_t N>
   static void acceptance_thresholds(std::span<double, N>) noexcept {}  // u^(1 / 1) = u
 };
 
-static_assert(SteppedKernel<HardSphere> && EventKernel<HardSphere>);
+using HardSphere = HardCore<3>;
+using HardDisk = HardCore<2>;
+
+static_assert(SteppedKernel<HardSphere> && EventKernel<HardSphere> && SteppedKernel<HardDisk>);
 
 }  // namespace granmc

@@ -2,44 +2,102 @@
 // The impact direction of a collision that is known to happen. Every kernel of the time-stepped scheme
 // weighs sigma-hat by Theta(g.sigma) (g.sigma) (hard spheres, 000 eq. 2; Maxwell and VHS in their
 // impact-direction form, collide/maxwell_pseudomolecules.hpp), so, given that the pair collides,
-// sigma-hat has the density (g-hat.sigma-hat) / pi on the hemisphere g-hat.sigma-hat > 0.
+// sigma-hat at angle theta to g-hat has density proportional to cos(theta) = g-hat.sigma-hat on the half
+// sphere (half circle) g-hat.sigma-hat > 0.
 //
-// Drawn from one direction n uniform on the sphere: sigma-hat = (g-hat + n) / |g-hat + n|. The point
-// g-hat + n is uniform on the unit sphere centred at g-hat, which passes through the origin; the ray from
-// the origin at angle theta to g-hat meets it at distance r = 2 cos(theta) and at angle theta to its
-// normal there, so the area it sweeps per solid angle is r^2 / cos(theta) = 4 cos(theta): the density of
-// sigma-hat is proportional to cos(theta) = g-hat.sigma-hat, as required (docs/physics.md).
+// Spheres (d = 3): drawn from one direction n uniform on the sphere, sigma-hat = (g-hat + n) / |g-hat + n|.
+// The point g-hat + n is uniform on the unit sphere centred at g-hat, which passes through the origin; the
+// ray from the origin at angle theta to g-hat meets it at distance r = 2 cos(theta) and at angle theta to
+// its normal there, so the area it sweeps per solid angle is r^2 / cos(theta) = 4 cos(theta): the density
+// of sigma-hat is proportional to cos(theta), as required (docs/physics.md).
+//
+// Disks (d = 2): the same construction on the circle sweeps a length r / cos(theta) = 2 per unit angle, a
+// uniform theta, so it does not carry over. Instead n = (cos theta, sin theta, 0) is drawn with sin(theta)
+// = 2 u - 1 uniform (density cos(theta) / 2, core/sampling.hpp's lambert_circle_vector), and
+// sigma-hat = cos(theta) g-hat + sin(theta) g-hat-perp, g-hat-perp = (-g_y, g_x) / |g|, g.sigma = |g| cos(theta).
 #include <cmath>
+#include <cstddef>
+#include <span>
 
+#include "kernel/core/batch_variates.hpp"
+#include "kernel/core/sampling.hpp"
 #include "kernel/core/vec3.hpp"
 
 namespace granmc {
 
 struct ImpactDirection {
   Vec3 sigma;      // unit vector, g.sigma > 0
-  double g_sigma;  // g.sigma; not > 0 (or NaN) only when g + |g| n = 0, a case of probability zero
+  double g_sigma;  // g.sigma; not > 0 (or NaN) only when g + |g| n = 0 or g = 0, cases of probability zero
 };
+
+/// The variate n of impact_direction<d> from two uniforms (d = 2 uses u1 only).
+template <int d>
+Vec3 impact_variate(double u1, double u2) noexcept {
+  if constexpr (d == 3)
+    return unit_vector(u1, u2);
+  else
+    return lambert_circle_vector(u1);
+}
+
+/// impact_variate lane by lane (the same bits).
+template <int d, std::size_t N>
+void impact_variates(std::span<const double, N> u1, std::span<const double, N> u2, std::span<double, N> x,
+                     std::span<double, N> y, std::span<double, N> z) noexcept {
+  if constexpr (d == 3)
+    unit_vectors(u1, u2, x, y, z);
+  else
+    lambert_circle_vectors(u1, x, y, z);
+}
+
+/// A direction uniform on the unit sphere (d = 3) or circle (d = 2) from two uniforms: sigma-hat of the
+/// paper's form, drawn before the acceptance (schemes/collision_stage.hpp, with a collision shift).
+template <int d>
+Vec3 uniform_direction(double u1, double u2) noexcept {
+  if constexpr (d == 3)
+    return unit_vector(u1, u2);
+  else
+    return circle_vector(u2);
+}
+
+/// uniform_direction lane by lane (the same bits).
+template <int d, std::size_t N>
+void uniform_directions(std::span<const double, N> u1, std::span<const double, N> u2, std::span<double, N> x,
+                        std::span<double, N> y, std::span<double, N> z) noexcept {
+  if constexpr (d == 3)
+    unit_vectors(u1, u2, x, y, z);
+  else
+    circle_vectors(u2, x, y, z);
+}
 
 /// impact_direction component by component, for a double or an xsimd batch of them (a register of
 /// candidates, each lane the same bits as impact_direction on it): sigma-hat = (sx, sy, sz), g.sigma.
-template <class T>
+template <int d, class T>
 void impact_direction_components(const T& gx, const T& gy, const T& gz, const T& g_norm, const T& nx, const T& ny,
                                  const T& nz, T& sx, T& sy, T& sz, T& g_sigma) noexcept {
   using std::sqrt;  // xsimd's for a batch
-  const T hx = gx + g_norm * nx, hy = gy + g_norm * ny, hz = gz + g_norm * nz;
-  const T inverse = 1.0 / sqrt(hx * hx + hy * hy + hz * hz);
-  sx = inverse * hx;
-  sy = inverse * hy;
-  sz = inverse * hz;
-  g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
+  if constexpr (d == 3) {
+    const T hx = gx + g_norm * nx, hy = gy + g_norm * ny, hz = gz + g_norm * nz;
+    const T inverse = 1.0 / sqrt(hx * hx + hy * hy + hz * hz);
+    sx = inverse * hx;
+    sy = inverse * hy;
+    sz = inverse * hz;
+    g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
+  } else {  // n = (cos theta, sin theta, 0)
+    const T inverse = 1.0 / g_norm;
+    sx = inverse * (nx * gx - ny * gy);
+    sy = inverse * (nx * gy + ny * gx);
+    sz = T(0.0);
+    g_sigma = nx * g_norm;
+  }
 }
 
-/// sigma-hat with density proportional to Theta(g.sigma) (g.sigma), from n uniform on the unit sphere;
-/// g_norm = |g|. Computed as h = g + |g| n (= |g| (g-hat + n)), sigma-hat = h / |h|, g.sigma = g.h / |h|.
-inline ImpactDirection impact_direction(const Vec3& g, double g_norm, const Vec3& n) noexcept {
-  ImpactDirection d;
-  impact_direction_components(g.x, g.y, g.z, g_norm, n.x, n.y, n.z, d.sigma.x, d.sigma.y, d.sigma.z, d.g_sigma);
-  return d;
+/// sigma-hat with density proportional to Theta(g.sigma) (g.sigma), from the variate n = impact_variate<d>;
+/// g_norm = |g|. Spheres: h = g + |g| n (= |g| (g-hat + n)), sigma-hat = h / |h|, g.sigma = g.h / |h|.
+template <int d = 3>
+ImpactDirection impact_direction(const Vec3& g, double g_norm, const Vec3& n) noexcept {
+  ImpactDirection id;
+  impact_direction_components<d>(g.x, g.y, g.z, g_norm, n.x, n.y, n.z, id.sigma.x, id.sigma.y, id.sigma.z, id.g_sigma);
+  return id;
 }
 
 }  // namespace granmc

@@ -18,6 +18,7 @@
 namespace granmc {
 
 struct MaxwellPseudomolecules {
+  static constexpr int dimension = 3;  // spheres only so far
   static constexpr double lambda = 0.0;
   static constexpr const char* name = "maxwell";
   static constexpr const char* explanation =

@@ -20,17 +20,23 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       const SpeciesConfig& a = scene.species[i];
       const SpeciesConfig& b = scene.species[j];
       const double sigma_ij = 0.5 * (a.diameter + b.diameter);
-      const double chi =
-          scene.collision.packing_fraction > 0.0 ? enskog_chi(scene.collision.packing_fraction, x, sigma, i, j) : 1.0;
+      const double phi = scene.collision.packing_fraction;
+      // Disks: one species (setup/run_plan.cpp refuses a disk mixture with a packing fraction).
+      const double chi = !(phi > 0.0)               ? 1.0
+                         : scene.run.dimension == 2 ? enskog_chi_disks(phi)
+                                                    : enskog_chi(phi, x, sigma, i, j);
       const double alpha = scene.collision.restitution[i][j];
       PairCoefficients p;
       p.i = i;
       p.j = j;
-      // 000: 4 pi sigma_ij^2 n_j chi_ij. The kernel form of 001 (collision.rate > 0, one species):
-      // 16 pi rate, whose mean over sigma-hat gives the total rate 4 pi rate |g|^lambda per pair
-      // (collide/maxwell_pseudomolecules.hpp; for hard spheres n sigma^2 = 4 rate).
-      p.rate_prefactor = scene.collision.rate > 0.0 ? 16.0 * std::numbers::pi * scene.collision.rate
-                                                    : 4.0 * std::numbers::pi * sigma_ij * sigma_ij * b.density * chi;
+      // 000: 4 pi sigma_ij^2 n_j chi_ij; for disks 2 pi sigma_ij n_j chi_ij (collide/hard_sphere.hpp). The
+      // kernel form of 001 (collision.rate > 0, one species, spheres): 16 pi rate, whose mean over sigma-hat
+      // gives the total rate 4 pi rate |g|^lambda per pair (collide/maxwell_pseudomolecules.hpp; for hard
+      // spheres n sigma^2 = 4 rate).
+      const double contact =
+          scene.run.dimension == 2 ? 2.0 * std::numbers::pi * sigma_ij : 4.0 * std::numbers::pi * sigma_ij * sigma_ij;
+      p.rate_prefactor =
+          scene.collision.rate > 0.0 ? 16.0 * std::numbers::pi * scene.collision.rate : contact * b.density * chi;
       p.mu_ji = b.mass / (a.mass + b.mass);
       p.mu_ij = a.mass / (a.mass + b.mass);
       p.one_plus_alpha = 1.0 + alpha;

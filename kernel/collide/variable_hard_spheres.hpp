@@ -20,6 +20,7 @@
 namespace granmc {
 
 struct VariableHardSpheres {
+  static constexpr int dimension = 3;  // spheres only so far
   static constexpr const char* name = "vhs";
   static constexpr const char* explanation =
       "variable hard spheres in the impact-direction form (16 pi rate (g.sigma) |g|^(lambda - 1))";

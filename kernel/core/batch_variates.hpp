@@ -145,15 +145,51 @@ inline void unit_vectors(std::span<const double, N> u1, std::span<const double, 
   }
 }
 
-/// The directions of the lanes selected by the set bits of `selected` (N <= 64), in increasing order:
-/// lane which[e] gets (x, y, z)[e], the direction unit_vectors gives its uniforms u1, u2. Returns how many
-/// lanes were selected; the SIMD work is for those only, in whole registers (a collision stage whose
-/// screen passes a fifth of its candidates converts a fifth of their directions).
+/// circle_vector lane by lane (the same bits, any N).
 template <std::size_t N>
-std::size_t selected_unit_vectors(std::uint64_t selected, const std::array<double, N>& u1,
-                                  const std::array<double, N>& u2, std::array<std::uint8_t, N>& which,
-                                  std::array<double, N>& x, std::array<double, N>& y,
-                                  std::array<double, N>& z) noexcept {
+inline void circle_vectors(std::span<const double, N> u, std::span<double, N> x, std::span<double, N> y,
+                           std::span<double, N> z) noexcept {
+  constexpr std::size_t whole = N - N % SimdDouble::size;
+  for (std::size_t k = 0; k < whole; k += SimdDouble::size) {
+    SimdDouble c, s;
+    detail::turn_sincos_lanes(SimdDouble::load_unaligned(&u[k]), c, s);
+    c.store_unaligned(&x[k]);
+    s.store_unaligned(&y[k]);
+    SimdDouble(0.0).store_unaligned(&z[k]);
+  }
+  for (std::size_t k = whole; k < N; ++k) {
+    const Vec3 e = circle_vector(u[k]);
+    x[k] = e.x, y[k] = e.y, z[k] = e.z;
+  }
+}
+
+/// lambert_circle_vector lane by lane (the same bits, any N).
+template <std::size_t N>
+inline void lambert_circle_vectors(std::span<const double, N> u, std::span<double, N> x, std::span<double, N> y,
+                                   std::span<double, N> z) noexcept {
+  constexpr std::size_t whole = N - N % SimdDouble::size;
+  for (std::size_t k = 0; k < whole; k += SimdDouble::size) {
+    const SimdDouble sin_theta = 2.0 * SimdDouble::load_unaligned(&u[k]) - 1.0;
+    xsimd::sqrt(detail::fused_multiply_add(-sin_theta, sin_theta, SimdDouble(1.0))).store_unaligned(&x[k]);
+    sin_theta.store_unaligned(&y[k]);
+    SimdDouble(0.0).store_unaligned(&z[k]);
+  }
+  for (std::size_t k = whole; k < N; ++k) {
+    const Vec3 e = lambert_circle_vector(u[k]);
+    x[k] = e.x, y[k] = e.y, z[k] = e.z;
+  }
+}
+
+/// The directions of the lanes selected by the set bits of `selected` (N <= 64), in increasing order:
+/// lane which[e] gets (x, y, z)[e], the direction `directions` (unit_vectors or another conversion of the
+/// same signature, over whole registers) gives its uniforms u1, u2. Returns how many lanes were selected;
+/// the SIMD work is for those only, in whole registers (a collision stage whose screen passes a fifth of
+/// its candidates converts a fifth of their directions).
+template <std::size_t N, class Directions>
+std::size_t selected_directions(std::uint64_t selected, const std::array<double, N>& u1,
+                                const std::array<double, N>& u2, std::array<std::uint8_t, N>& which,
+                                std::array<double, N>& x, std::array<double, N>& y, std::array<double, N>& z,
+                                Directions&& directions) noexcept {
   static_assert(N <= 64 && N % SimdDouble::size == 0, "one 64-bit mask, whole registers");
   constexpr std::size_t w = SimdDouble::size;
   std::array<double, N> c1, c2;  // the selected uniforms, packed
@@ -166,8 +202,8 @@ std::size_t selected_unit_vectors(std::uint64_t selected, const std::array<doubl
   }
   for (std::size_t k = count; k % w != 0; ++k) c1[k] = c2[k] = 0.5;  // the last register's unused lanes
   for (std::size_t e = 0; e < count; e += w)
-    unit_vectors(std::span<const double, w>(&c1[e], w), std::span<const double, w>(&c2[e], w),
-                 std::span<double, w>(&x[e], w), std::span<double, w>(&y[e], w), std::span<double, w>(&z[e], w));
+    directions(std::span<const double, w>(&c1[e], w), std::span<const double, w>(&c2[e], w),
+               std::span<double, w>(&x[e], w), std::span<double, w>(&y[e], w), std::span<double, w>(&z[e], w));
   return count;
 }
 

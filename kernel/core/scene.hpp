@@ -47,7 +47,7 @@ struct RunConfig {
   SampleSpacing sample_spacing = SampleSpacing::linear;
   Storage storage = Storage::double_precision;
   double checkpoint_every = 10.0;  // >= 0, minutes between checkpoints of `granmc run` (0: at every sample)
-  int dimension = 3;               // of a gas: 3 hard spheres, 2 hard disks (theory only so far)
+  int dimension = 3;               // of a gas: 3 hard spheres, 2 hard disks
 };
 
 struct SpeciesConfig {

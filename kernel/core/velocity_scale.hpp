@@ -15,7 +15,7 @@ struct VelocityScale {
   double log_u = 0.0;  // log of the velocity scale u (scene velocity units)
 
   [[nodiscard]] double u() const noexcept { return std::exp(log_u); }
-  /// Physical temperature of a stored "temperature" theta = m <c^2> / 3: log T = 2 log u + log theta.
+  /// Physical temperature of a stored "temperature" theta = m <c^2> / d: log T = 2 log u + log theta.
   [[nodiscard]] double log_temperature(double theta) const noexcept { return 2.0 * log_u + std::log(theta); }
 };
 

@@ -25,6 +25,7 @@ struct WhiteNoise {
 
   double beta = 0.0;           // velocity diffusion coefficient (velocity^2 / time)
   std::vector<double> masses;  // m_i of the species, in scene order
+  int dimension = 3;           // 2: disks, kicked in the (x, y) plane only
 
   [[nodiscard]] std::string explanation() const {
     return "white noise after each collision stage (splitting, O(N) per step)";
@@ -48,11 +49,12 @@ struct WhiteNoise {
   void apply_range(Store& store, std::size_t from, std::size_t to, std::uint64_t offset, std::uint16_t i,
                    const State& state, const StepContext& step, CompensatedSum& change) const noexcept {
     const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
+    const double width_z = dimension == 3 ? width : 0.0;                     // disks: no kick along z
     const double mass = masses[i];
     for_each_particle_normal<batch>(*step.rng, RngPurpose::white_noise_kick, i, state.step, offset + from, to - from,
                                     [&](std::size_t k, const Vec3& xi) {
                                       const Vec3 c = store.velocity(from + k);
-                                      const Vec3 kicked = c + width * xi;
+                                      const Vec3 kicked = c + Vec3{width * xi.x, width * xi.y, width_z * xi.z};
                                       store.set_velocity(from + k, kicked);
                                       change.add(mass * (norm2(kicked) - norm2(c)));
                                     });

@@ -30,16 +30,17 @@ Observed record_observation(const Scene& scene, const VelocityScale& scale,
   const double n = total_density(scene);
   const GasTotals totals = gas_totals(scene, about_origin);
   const std::vector<SpeciesMoments>& moments = about_flow;
-  double theta_mix = 0.0;  // sum_i x_i m_i <c^2> / 3, the mixture temperature in stored units
+  const int d = scene.run.dimension;
+  double theta_mix = 0.0;  // sum_i x_i m_i <c^2> / d, the mixture temperature in stored units
   for (std::size_t i = 0; i < moments.size(); ++i) {
     const SpeciesConfig& sp = scene.species[i];
-    const double theta = sp.mass * moments[i].mean_c2() / 3.0;
+    const double theta = sp.mass * moments[i].mean_c2() / d;
     const double log_t = scale.log_temperature(theta);
     SpeciesSeries& s = series.species[i];
     s.temperature.push_back(std::exp(log_t));
     s.log_temperature.push_back(log_t);
-    s.a2.push_back(moments[i].a2());
-    s.a3.push_back(moments[i].a3());
+    s.a2.push_back(moments[i].a2(d));
+    s.a3.push_back(moments[i].a3(d));
     theta_mix += sp.density / n * theta;
   }
   const double log_t = scale.log_temperature(theta_mix);

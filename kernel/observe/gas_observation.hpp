@@ -25,7 +25,7 @@ GasTotals gas_totals(const Scene& scene, const std::vector<SpeciesMoments>& mome
 /// What record_observation returns: the totals about the origin and the mixture temperature in stored units.
 struct Observed {
   GasTotals totals;
-  double theta_mixture = 0.0;  // sum_i x_i m_i <|c - flow|^2> / 3
+  double theta_mixture = 0.0;  // sum_i x_i m_i <|c - flow|^2> / d
 };
 
 /// Appends the temperatures, cumulants and momentum of one observation to `series`, from the moments of

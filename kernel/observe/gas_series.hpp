@@ -24,7 +24,7 @@ inline std::pair<double, double> stationary_window(const std::vector<double>& ti
 }
 
 struct SpeciesSeries {
-  std::vector<double> temperature;      // T_i = m_i <V^2> / 3 (energy units)
+  std::vector<double> temperature;      // T_i = m_i <V^2> / d (energy units)
   std::vector<double> log_temperature;  // ln T_i, finite where T_i underflows
   std::vector<double> a2;               // (3/5) <V^4> / <V^2>^2 - 1
   std::vector<double> a3;               // 1 + 3 a2 - (9/35) <V^6> / <V^2>^3 (third Sonine coefficient)

@@ -17,16 +17,21 @@ struct SpeciesMoments {
 
   /// <c^2>
   [[nodiscard]] double mean_c2() const noexcept { return sum_c2 / static_cast<double>(particles); }
-  /// Kurtosis cumulant a2 = (3/5) <c^4> / <c^2>^2 - 1 (zero for a Maxwellian; c_i = 2 a2, 000 Fig. 1).
-  [[nodiscard]] double a2() const noexcept {
+  /// Kurtosis cumulant a2 = d/(d+2) <c^4> / <c^2>^2 - 1 in d = `dimension` (3/5 for spheres, 1/2 for disks;
+  /// zero for a Maxwellian; c_i = 2 a2, 000 Fig. 1).
+  [[nodiscard]] double a2(int dimension) const noexcept {
     const double m2 = mean_c2();
-    return 0.6 * (sum_c4 / static_cast<double>(particles)) / (m2 * m2) - 1.0;
+    const double d = dimension;
+    return d / (d + 2.0) * (sum_c4 / static_cast<double>(particles)) / (m2 * m2) - 1.0;
   }
-  /// Third Sonine coefficient a3 = 1 + 3 a2 - (9/35) <c^6> / <c^2>^3 (zero for a Maxwellian; from
-  /// <c^6> = (105/8)(1 + 3 a2 - a3) in units of sqrt(2T/m), docs/derivations/sonine-hcs.md).
-  [[nodiscard]] double a3() const noexcept {
+  /// Third Sonine coefficient a3 = 1 + 3 a2 - d^2/((d+2)(d+4)) <c^6> / <c^2>^3 (9/35 for spheres, 1/6 for
+  /// disks; zero for a Maxwellian; from <c^6> = (d/2)(d/2+1)(d/2+2)(1 + 3 a2 - a3) in units of sqrt(2T/m),
+  /// docs/derivations/sonine-hcs.md).
+  [[nodiscard]] double a3(int dimension) const noexcept {
     const double m2 = mean_c2();
-    return 1.0 + 3.0 * a2() - 9.0 / 35.0 * (sum_c6 / static_cast<double>(particles)) / (m2 * m2 * m2);
+    const double d = dimension;
+    return 1.0 + 3.0 * a2(dimension) -
+           d * d / ((d + 2.0) * (d + 4.0)) * (sum_c6 / static_cast<double>(particles)) / (m2 * m2 * m2);
   }
 };
 

@@ -33,7 +33,7 @@ SymTensor reduced_kinetic_pressure(const Scene& scene, const BasicGasState<Real>
         });
   }
   const SymTensor sum{xx.value(), yy.value(), zz.value(), xy.value(), xz.value(), yz.value()};
-  return (3.0 / sum.trace()) * sum;
+  return (scene.run.dimension / sum.trace()) * sum;
 }
 
 template SymTensor reduced_kinetic_pressure(const Scene&, const GasState&);

@@ -6,7 +6,8 @@
 // collision is accepted and omega_max^(ij) := omega (000 sec. 3). Two forms of the acceptance, the same
 // law:
 //  - With a collision shift (the Enskog gas under shear), the paper's: a direction sigma-hat uniform on
-//    the sphere first, omega = omega_kl(sigma-hat) = prefactor rate(g.sigma, |g|^2), zero when g.sigma <= 0.
+//    the sphere (the circle for disks) first, omega = omega_kl(sigma-hat) = prefactor rate(g.sigma, |g|^2),
+//    zero when g.sigma <= 0.
 //  - Otherwise the direction after the acceptance: omega = prefactor mean_rate(|g|^2), the mean of
 //    omega_kl over sigma-hat (collide/hard_sphere.hpp), then sigma-hat from its conditional law given the
 //    collision, density proportional to Theta(g.sigma) (g.sigma) (collide/impact_direction.hpp). The
@@ -125,6 +126,7 @@ class BatchedStage {
   // acceptance on the mean only the candidates that pass the screen need a direction.
   static constexpr bool screened = Kernel::screen_candidates;
   static constexpr bool directions_for_all = !screened || Shift::active;
+  static constexpr int dimension = Kernel::dimension;  // 3 spheres, 2 disks (collide/impact_direction.hpp)
   // A batch's values in whole SIMD registers.
   static constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
   using Lanes = std::array<double, lanes>;
@@ -296,8 +298,9 @@ class BatchedStage {
       for (std::uint64_t held = deferred_[i]; held != 0; held &= held - 1) {
         const auto b = static_cast<std::uint64_t>(std::countr_zero(held));
         const Drawn& d = chunk_[i];
-        // n as the batch would have had it: the same bits as the SIMD unit_vectors
-        const Vec3 n = directions_for_all ? Vec3{d.sx[b], d.sy[b], d.sz[b]} : unit_vector(d.dir1[b], d.dir2[b]);
+        // n as the batch would have had it: the same bits as the SIMD impact_variates
+        const Vec3 n =
+            directions_for_all ? Vec3{d.sx[b], d.sy[b], d.sz[b]} : impact_variate<dimension>(d.dir1[b], d.dir2[b]);
         nx_[0] = n.x, ny_[0] = n.y, nz_[0] = n.z;
         test_and_apply(d, b, nx_, ny_, nz_, 0);
       }
@@ -432,9 +435,14 @@ class BatchedStage {
       d.dir2[b] = uniform_open(w[1][draw(b)]);
       d.accept[b] = uniform_open(w[2][draw(b)]);
     }
-    if constexpr (directions_for_all)  // the same bits as unit_vector, in SIMD
-      unit_vectors(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2), std::span(d.sx),
-                   std::span(d.sy), std::span(d.sz));
+    // sigma-hat of the paper's form, or the variates n of the impact direction (the same bits as their scalar
+    // forms, in SIMD)
+    if constexpr (directions_for_all && Shift::active)
+      uniform_directions<dimension>(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2),
+                                    std::span(d.sx), std::span(d.sy), std::span(d.sz));
+    else if constexpr (directions_for_all)
+      impact_variates<dimension>(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2),
+                                 std::span(d.sx), std::span(d.sy), std::span(d.sz));
   }
 
   /// The acceptance of a candidate of pair q with rate omega and uniform u (000 sec. 3, step 2): when
@@ -479,7 +487,7 @@ class BatchedStage {
     const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
     const Vec3 vk = d.pk[b].velocity();
     const Vec3 vl = d.pl[b].velocity();
-    // n, uniform on the sphere, is read where it is used: read before the acceptance it
+    // n (sigma-hat itself with a shift) is read where it is used: read before the acceptance it
     // holds registers the one-pair loop needs (callgrind, docs/performance.md).
     Vec3 sigma;
     double g_sigma;
@@ -494,7 +502,7 @@ class BatchedStage {
       const double g2 = norm2(g);
       // Maxwell: omega = omega_max (majorant_bound), so every candidate passes the test (u < 1).
       if (!accepted(q, p.rate_prefactor * kernel_.mean_rate(g2), d.accept[b])) return;
-      const ImpactDirection id = impact_direction(g, std::sqrt(g2), {nx[e], ny[e], nz[e]});
+      const ImpactDirection id = impact_direction<dimension>(g, std::sqrt(g2), {nx[e], ny[e], nz[e]});
       if (!(id.g_sigma > 0.0)) return;  // g + |g| n = 0 (or g = 0): probability zero, no impulse
       sigma = id.sigma;
       g_sigma = id.g_sigma;
@@ -540,7 +548,7 @@ class BatchedStage {
         const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
         if constexpr (!one_pair) threshold_[b] = d.accept[b] * majorant_[q];
         if constexpr (Shift::active) {
-          static_assert(std::is_same_v<Kernel, HardSphere>,
+          static_assert(std::is_same_v<Kernel, HardCore<dimension>>,
                         "the Enskog shift runs with hard spheres (setup/run_plan.hpp)");
           const Vec3 sigma{d.sx[b], d.sy[b], d.sz[b]};
           const Vec3 g = shift_.relative_velocity(d.pk[b].velocity(), d.pl[b].velocity(), sigma, p);
@@ -582,7 +590,9 @@ class BatchedStage {
   /// (the same bits as impact_direction, so the square roots and divisions of successive collisions no longer
   /// wait on each other), and only its acceptance is left for its turn. Returns how many passed.
   std::size_t impact_directions(const Drawn& d, std::uint64_t full_test) noexcept {
-    const std::size_t passed = selected_unit_vectors(full_test, d.dir1, d.dir2, which_, nx_, ny_, nz_);
+    const std::size_t passed = selected_directions(
+        full_test, d.dir1, d.dir2, which_, nx_, ny_, nz_,
+        [](auto u1, auto u2, auto x, auto y, auto z) { impact_variates<dimension>(u1, u2, x, y, z); });
     for (std::size_t e = 0; e < passed; ++e) {
       const Vec3 g = d.pk[which_[e]].velocity() - d.pl[which_[e]].velocity();
       gx_[e] = g.x, gy_[e] = g.y, gz_[e] = g.z, g_square_[e] = g2_[which_[e]];
@@ -592,8 +602,8 @@ class BatchedStage {
     for (std::size_t e = 0; e < passed; e += SimdDouble::size) {
       const auto at = [e](const Lanes& a) { return SimdDouble::load_unaligned(&a[e]); };
       SimdDouble x, y, z, gs;
-      impact_direction_components(at(gx_), at(gy_), at(gz_), sqrt(at(g_square_)), at(nx_), at(ny_), at(nz_), x, y, z,
-                                  gs);
+      impact_direction_components<dimension>(at(gx_), at(gy_), at(gz_), sqrt(at(g_square_)), at(nx_), at(ny_), at(nz_),
+                                             x, y, z, gs);
       x.store_unaligned(&sigma_x_[e]), y.store_unaligned(&sigma_y_[e]), z.store_unaligned(&sigma_z_[e]);
       gs.store_unaligned(&g_sigma_[e]);
     }

@@ -61,6 +61,8 @@ struct collision_shift<First, Rest...> {
 template <class Backend, class Real, SteppedKernel Kernel, StepEffect... Effects>
 class BasicDsmc {
   using Shift = typename detail::collision_shift<Effects...>::type;
+  // Degrees of freedom per particle: T = m <c^2> / d (3 spheres, 2 disks).
+  static constexpr double dimension = Kernel::dimension;
 
  public:
   /// Uniform shear flow (effects/lagrangian_shear.hpp) is in the pack: the pressure tensor is observed.
@@ -182,7 +184,7 @@ class BasicDsmc {
 
  private:
   double log_temperature() const noexcept {
-    return state_.scale.log_temperature(twice_energy_ / (3.0 * total_particles_));
+    return state_.scale.log_temperature(twice_energy_ / (dimension * total_particles_));
   }
 
   /// The thermal time step follows the mean free time, dt ~ T^-1/2 (000 sec. 3). Under shear it never
@@ -225,8 +227,8 @@ class BasicDsmc {
     }
     if constexpr (Shift::active) {
       // This step's share of the time integral of P^c / (n T): n / N u sum / (n u^2 T_stored), with the
-      // stored mixture temperature T_stored = twice_energy / 3N before the collisions.
-      transfer_integral_ += (3.0 / (state_.scale.u() * twice_energy_)) * tally.transfer;
+      // stored mixture temperature T_stored = twice_energy / dN before the collisions.
+      transfer_integral_ += (dimension / (state_.scale.u() * twice_energy_)) * tally.transfer;
       twice_energy_ += tally.twice_energy_shear_work;
     }
     twice_energy_ -= tally.twice_energy_loss;
@@ -298,10 +300,10 @@ class BasicDsmc {
     const Vec3 v_cm = (1.0 / t.mass) * t.momentum;
     momentum_removed_ += norm(t.momentum) / std::sqrt(t.mass * t.twice_energy);
     const double twice_energy = t.twice_energy - norm2(t.momentum) / t.mass;  // after removing v_cm
-    const double s = std::sqrt(3.0 * total_particles_ / twice_energy);
+    const double s = std::sqrt(dimension * total_particles_ / twice_energy);
     for (BasicSpeciesStore<Real>& store : state_.species) store.for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
     state_.scale.log_u -= std::log(s);
-    twice_energy_ = reference_twice_energy_ = 3.0 * total_particles_;
+    twice_energy_ = reference_twice_energy_ = dimension * total_particles_;
     ++rescales_;
   }
 

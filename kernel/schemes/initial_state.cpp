@@ -9,9 +9,11 @@ namespace granmc {
 
 template <class Real>
 void maxwellian_velocities(BasicSpeciesStore<Real>& store, const RandomStream& rng, std::uint16_t species,
-                           std::uint64_t first, double width) noexcept {
+                           std::uint64_t first, double width, int dimension) noexcept {
   for_each_particle_normal<64>(rng, RngPurpose::initial_velocity, species, 0, first, store.size(),
-                               [&](std::size_t k, const Vec3& z) { store.set_velocity(k, width * z); });
+                               [&](std::size_t k, const Vec3& z) {
+                                 store.set_velocity(k, width * (dimension == 3 ? z : Vec3{z.x, z.y, 0.0}));
+                               });
 }
 
 template <class Real>
@@ -22,7 +24,7 @@ BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng
     const SpeciesConfig& sp = scene.species[i];
     BasicSpeciesStore<Real> store(static_cast<std::size_t>(sp.particles));
     const double width = 1.0 / std::sqrt(sp.mass);  // stored units: <c_x^2> = T(0) / (m u^2) = 1 / m
-    maxwellian_velocities(store, rng, static_cast<std::uint16_t>(i), 0, width);
+    maxwellian_velocities(store, rng, static_cast<std::uint16_t>(i), 0, width, scene.run.dimension);
     if (scene.initial_zero_momentum) {
       const SpeciesMoments m = species_moments(store);
       const Vec3 mean = (1.0 / static_cast<double>(store.size())) * m.sum_c;
@@ -33,9 +35,10 @@ BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng
   return state;
 }
 
-template void maxwellian_velocities(SpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, double) noexcept;
-template void maxwellian_velocities(FloatSpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t,
-                                    double) noexcept;
+template void maxwellian_velocities(SpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, double,
+                                    int) noexcept;
+template void maxwellian_velocities(FloatSpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, double,
+                                    int) noexcept;
 template GasState maxwellian_state(const Scene&, const RandomStream&);
 template FloatGasState maxwellian_state(const Scene&, const RandomStream&);
 

@@ -10,15 +10,16 @@ namespace granmc {
 /// Particles `first` + k of species i of the Maxwellian start (000 eq. 13), before the mean is removed,
 /// into particle k of `store`, for every k of the store: normals from the block (initial_velocity, i, 0,
 /// first + k) (core/batch_variates.hpp ParticleNormals, 64 particles at a time in SIMD) times `width`, the
-/// thermal width 1/sqrt(m) in stored units. A system spread over ranks fills its part with first = its
-/// first particle, and gets the velocities of the one-process start.
+/// thermal width 1/sqrt(m) in stored units; in d = `dimension` = 2 (disks) the z component is 0. A system
+/// spread over ranks fills its part with first = its first particle, and gets the velocities of the
+/// one-process start.
 template <class Real>
 void maxwellian_velocities(BasicSpeciesStore<Real>& store, const RandomStream& rng, std::uint16_t species,
-                           std::uint64_t first, double width) noexcept;
+                           std::uint64_t first, double width, int dimension) noexcept;
 
 /// Maxwellian velocities at the scene's initial temperature for every species (000 eq. 13), then each
 /// species' mean velocity subtracted so the total momentum vanishes (000 sec. 3). The velocity scale is
-/// u = sqrt(T(0)), so stored velocities have m <c^2> / 3 = 1 on average.
+/// u = sqrt(T(0)), so stored velocities have m <c^2> / d = 1 on average.
 /// Real is the storage precision (GasState or FloatGasState): the draws are the same, rounded when stored.
 template <class Real = double>
 BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng);

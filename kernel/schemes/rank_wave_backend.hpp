@@ -87,7 +87,7 @@ class RankWaveBackend {
     BasicGasState<Real> state;
     state.species.emplace_back(hi_ - lo_);
     state.scale.log_u = 0.5 * std::log(scene.initial_temperature);
-    maxwellian_velocities(state.species[0], rng, 0, lo_, 1.0 / std::sqrt(mass_));
+    maxwellian_velocities(state.species[0], rng, 0, lo_, 1.0 / std::sqrt(mass_), scene.run.dimension);
     if (!scene.initial_zero_momentum) return state;
     const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments_about(state.species[0], {}).sum_c;
     state.species[0].for_each_velocity([&](Vec3& c) { c -= mean; });
@@ -364,7 +364,9 @@ class RankWaveBackend {
     } else if (uniform_open(w[2]) * omega_max > omega) {
       return 0.0;
     }
-    const ImpactDirection d = impact_direction(g, std::sqrt(g2), unit_vector(uniform_open(w[0]), uniform_open(w[1])));
+    constexpr int dim = Kernel::dimension;
+    const ImpactDirection d =
+        impact_direction<dim>(g, std::sqrt(g2), impact_variate<dim>(uniform_open(w[0]), uniform_open(w[1])));
     if (!(d.g_sigma > 0.0)) return 0.0;
     inelastic_collision(vk, vl, d.sigma, d.g_sigma, pair);
     counts[0] += 1.0;

@@ -169,9 +169,9 @@ void explain(const SteppedPlan& plan, const Scene& scene, PlanExplanation& out) 
     out.candidates_upper_bound = false;
   }
   const double u0 = std::sqrt(scene.initial_temperature);
-  // The majorant bounds the mean of omega_kl over sigma-hat, a quarter of omega_kl's bound, except with the
-  // Enskog shear shift (schemes/collision_stage.hpp, majorant_bound).
-  const double mean_form = shift ? 1.0 : 0.25;
+  // The majorant bounds the mean of omega_kl over sigma-hat, a quarter of omega_kl's bound (1/pi for disks),
+  // except with the Enskog shear shift (schemes/collision_stage.hpp, majorant_bound).
+  const double mean_form = shift ? 1.0 : scene.run.dimension == 2 ? HardDisk::mean_g_sigma : HardSphere::mean_g_sigma;
   for (const PairCoefficients& p : pair_coefficients(scene)) {
     const SpeciesConfig& a = scene.species[p.i];
     const SpeciesConfig& b = scene.species[p.j];

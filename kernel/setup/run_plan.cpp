@@ -22,7 +22,9 @@ constexpr const char* supported_list =
     "\"white-noise\", packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of "
     "dimension 1 or 2 (the needle) in a \"gaussian\" or \"power-law\" bath; "
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
-    "every gas scene; gases in d = 3 (run.dimension = 2 has its theory in `granmc theory`)";
+    "every gas scene; hard disks (run.dimension = 2) with method = \"dsmc\", one or two species (one with a "
+    "packing_fraction: Henderson's chi), thermostat \"none\", \"gaussian\" or \"white-noise\", no shear or "
+    "relaxation";
 
 [[noreturn]] void refuse(const std::string& what) {
   throw PlanRefusal("this version of granmc cannot run " + what + " yet; " + supported_list);
@@ -69,7 +71,7 @@ EventPlan event_plan(const Scene& scene) {
   if (scene.shear_rate != 0.0) refuse("the event scheme with a [shear] rate");
   if (scene.relaxation) refuse("the event scheme with the [relaxation] term");
   // The kernel follows lambda (the scene file fixes it for "maxwell" and "hard-sphere").
-  KernelChoice kernel = VariableHardSpheres{c.lambda};
+  EventKernelChoice kernel = VariableHardSpheres{c.lambda};
   if (c.lambda == 0.0) kernel = MaxwellPseudomolecules{};
   if (c.lambda == 1.0) kernel = HardSphere{};
   return {kernel, storage_choice(scene), scene.thermostat.kind == ThermostatKind::white_noise};
@@ -84,6 +86,7 @@ KernelChoice stepped_kernel(const Scene& scene) {
     case CollisionKernel::hard_sphere:
       break;
   }
+  if (scene.run.dimension == 2) return HardDisk{};
   return HardSphere{};
 }
 
@@ -108,7 +111,7 @@ ThermostatChoice thermostat_effects(const Scene& scene) {
           {thermostat, BgkRelaxation{SonineMaxwellian(a2), scene.species[0].mass}}};
     }
     case ThermostatKind::white_noise:
-      return EffectList<WhiteNoise>{{WhiteNoise{th.beta, species_masses(scene)}}};
+      return EffectList<WhiteNoise>{{WhiteNoise{th.beta, species_masses(scene), scene.run.dimension}}};
     case ThermostatKind::none:
       break;
   }
@@ -121,6 +124,12 @@ SteppedPlan stepped_plan(const Scene& scene, Spread spread) {
   if (scene.species.empty() || scene.species.size() > 2) refuse("a scene without one or two [[species]]");
   if (scene.relaxation && (scene.species.size() != 1 || !scene.thermostat.zeta_is_cooling_rate))
     refuse(relaxation_refusal);
+  if (scene.run.dimension == 2) {
+    if (scene.collision.kernel != CollisionKernel::hard_sphere || scene.collision.rate > 0.0)
+      refuse("a gas of disks (run.dimension = 2) other than hard disks with collision.rate = 0");
+    if (scene.species.size() == 2 && scene.collision.packing_fraction > 0.0)
+      refuse("two species of disks with a packing_fraction (chi_ij of a disk mixture)");
+  }
   SteppedPlan plan{stepped_kernel(scene), shear_effects(scene), thermostat_effects(scene), storage_choice(scene),
                    BatchedStage{}};
   std::visit(
@@ -135,14 +144,15 @@ SteppedPlan stepped_plan(const Scene& scene, Spread spread) {
     if (scene.species.size() != 1) refuse_spread("two species");
     plan.backend = RankWaveStage{};
     std::visit(
-        [](const auto& shear, const auto& thermostat, const auto& storage) {
+        [](const auto& kernel, const auto& shear, const auto& thermostat, const auto& storage) {
+          using K = std::decay_t<decltype(kernel)>;
           using S = std::decay_t<decltype(shear)>;
           using T = std::decay_t<decltype(thermostat)>;
           using R = std::decay_t<decltype(storage)>;
-          if constexpr (spread_refusal<S, T, R, RankWaveStage>() != nullptr)
-            refuse_spread(spread_refusal<S, T, R, RankWaveStage>());
+          if constexpr (spread_refusal<K, S, T, R, RankWaveStage>() != nullptr)
+            refuse_spread(spread_refusal<K, S, T, R, RankWaveStage>());
         },
-        plan.shear, plan.thermostat, plan.storage);
+        plan.kernel, plan.shear, plan.thermostat, plan.storage);
   }
   return plan;
 }
@@ -155,8 +165,8 @@ RunPlan make_plan(const Scene& scene, Spread spread) {
     if (spread == Spread::particles) refuse_spread("an [intruder] scene");
     return {scheme, spread};
   }
-  if (scene.run.dimension != 3) refuse("a gas in d = 2 (run.dimension = 2, hard disks)");
   if (scene.run.method == Method::event) {
+    if (scene.run.dimension == 2) refuse("the event scheme with disks (run.dimension = 2)");
     EventPlan event = event_plan(scene);
     if (spread == Spread::particles) refuse_spread("a method other than \"dsmc\"");
     if (!scene.weights) return {event, spread};

@@ -53,9 +53,10 @@ struct EffectList {
   static constexpr bool has = (std::is_same_v<E, Effects> || ...);
 };
 
-/// The collision kernels, one per physical law, each with the time-stepped and the event form
-/// (collide/collision_kernel.hpp).
-using KernelChoice = std::variant<HardSphere, MaxwellPseudomolecules, VariableHardSpheres>;
+/// The collision kernels of the event scheme and the weighted particles, one per physical law
+/// (collide/collision_kernel.hpp), and of the time-stepped scheme, which also has hard disks.
+using EventKernelChoice = std::variant<HardSphere, MaxwellPseudomolecules, VariableHardSpheres>;
+using KernelChoice = std::variant<HardSphere, HardDisk, MaxwellPseudomolecules, VariableHardSpheres>;
 /// Uniform shear flow: none, the inertial force (Boltzmann), or with the Enskog shift of the contact velocity.
 using ShearChoice =
     std::variant<EffectList<>, EffectList<LagrangianShear>, EffectList<LagrangianShear, EnskogShearShift>>;
@@ -79,7 +80,9 @@ inline constexpr const char* relaxation_refusal =
 /// products for which it and spread_refusal are nullptr.
 template <class Kernel, class Shear, class Thermostat>
 constexpr const char* stepped_refusal() noexcept {
-  if constexpr (!Shear::empty && !std::is_same_v<Kernel, HardSphere>)
+  if constexpr (!Shear::empty && Kernel::dimension == 2)
+    return "a [shear] rate with hard disks (run.dimension = 2)";
+  else if constexpr (!Shear::empty && !std::is_same_v<Kernel, HardSphere>)
     return "a [shear] rate with kernel = \"maxwell\" or \"vhs\"";
   else if constexpr (!Shear::empty && Thermostat::template has<WhiteNoise>)
     return "a [shear] rate with the white-noise thermostat";
@@ -90,10 +93,12 @@ constexpr const char* stepped_refusal() noexcept {
 }
 
 /// Why the rank-wave backend cannot run these choices (completing "is not implemented for ..."), or nullptr.
-template <class Shear, class Thermostat, class Storage, class Backend>
+template <class Kernel, class Shear, class Thermostat, class Storage, class Backend>
 constexpr const char* spread_refusal() noexcept {
   if constexpr (!std::is_same_v<Backend, RankWaveStage>)
     return nullptr;
+  else if constexpr (Kernel::dimension == 2)
+    return "hard disks (run.dimension = 2)";
   else if constexpr (!Shear::empty)
     return "a [shear] rate";
   else if constexpr (Thermostat::template has<BgkRelaxation>)
@@ -107,7 +112,8 @@ constexpr const char* spread_refusal() noexcept {
 /// Whether the dispatch compiles this product of time-stepped choices.
 template <class Kernel, class Shear, class Thermostat, class Storage, class Backend>
 inline constexpr bool stepped_supported = stepped_refusal<Kernel, Shear, Thermostat>() ==
-                                          nullptr&& spread_refusal<Shear, Thermostat, Storage, Backend>() == nullptr;
+                                          nullptr&& spread_refusal<Kernel, Shear, Thermostat, Storage, Backend>() ==
+                                          nullptr;
 
 /// Time-stepped ESMC/DSMC of a gas (000 sec. 3; 001's time-stepped counterpart; 003).
 struct SteppedPlan {
@@ -120,7 +126,7 @@ struct SteppedPlan {
 
 /// The time-step-free white-noise scheme (001 sec. 4).
 struct EventPlan {
-  KernelChoice kernel;
+  EventKernelChoice kernel;
   StorageChoice storage;
   bool white_noise = false;  // beta > 0 acts by lazy Brownian updates (001 eq. 23)
 };
@@ -128,7 +134,7 @@ struct EventPlan {
 /// Weighted particles for the tails (SWPM, schemes/swpm_scheme.hpp; 001 Remark 10): the event scheme's
 /// gas, double storage.
 struct WeightedPlan {
-  KernelChoice kernel;
+  EventKernelChoice kernel;
   bool white_noise = false;  // beta > 0 acts by lazy Brownian updates (001 eq. 23)
 };
 
