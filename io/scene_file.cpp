@@ -42,7 +42,8 @@ const std::vector<KnownTable>& known_tables() {
        {"method", "seed", "replicas", "t_end", "dt", "samples", "dt_scaling", "sample_spacing", "storage",
         "checkpoint_every", "dimension"}},
       {"[[species]]", {"name", "mass", "diameter", "density", "particles"}},
-      {"[collision]", {"kernel", "lambda", "rate", "restitution", "packing_fraction"}},
+      {"[collision]",
+       {"kernel", "lambda", "rate", "restitution", "packing_fraction", "tangential_restitution", "reduced_inertia"}},
       {"[thermostat]", {"kind", "zeta", "beta"}},
       {"[shear]", {"rate"}},
       {"[relaxation]", {"enabled", "a2"}},
@@ -707,6 +708,22 @@ void Reader::read_collision(const Section& s, Scene& scene) const {
 
   if (const auto phi = number(s, "packing_fraction", "a number in [0, 1)"))
     c.packing_fraction = unit_half_open(s.key("packing_fraction"), *phi);
+
+  // Rough particles (docs/derivations/rough-hcs.md): beta = -1 is the smooth gas.
+  if (const auto beta = number(s, "tangential_restitution", "a number in [-1, 1]")) {
+    if (!(*beta >= -1.0 && *beta <= 1.0))
+      fail(s.key("tangential_restitution"),
+           fmt(*beta) + " is outside [-1, 1] (-1: smooth, 0: sticking tangentially, 1: perfectly rough)");
+    c.tangential_restitution = *beta;
+  }
+  c.reduced_inertia = scene.run.dimension == 2 ? 0.5 : 0.4;  // a uniform disk, a uniform sphere
+  if (const auto kappa = number(s, "reduced_inertia", "a number in (0, 1]")) {
+    if (!(*kappa > 0.0 && *kappa <= 1.0))
+      fail(s.key("reduced_inertia"), fmt(*kappa) +
+                                         " is outside (0, 1]: kappa = 4 I / (m sigma^2) is 2/5 for a uniform sphere, "
+                                         "2/3 for a hollow one, 1/2 for a uniform disk and 1 for a ring");
+    c.reduced_inertia = *kappa;
+  }
 }
 
 void Reader::read_thermostat(const Section& s, ThermostatConfig& th) const {

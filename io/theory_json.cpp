@@ -4,6 +4,7 @@
 #include "kernel/schemes/sample_times.hpp"
 #include "kernel/theory/intruder.hpp"
 #include "kernel/theory/mixture_viscosity.hpp"
+#include "kernel/theory/rough.hpp"
 #include "kernel/theory/sonine.hpp"
 #include "kernel/theory/sonine_hcs.hpp"
 #include "kernel/theory/steady_shear.hpp"
@@ -227,6 +228,35 @@ void add_steady_shear(const Scene& scene, const std::vector<double>& /*times*/, 
   applies.push_back("steady uniform shear flow without thermostat, dilute hard spheres: Grad's solution (000 sec. 5)");
 }
 
+/// Rough particles, one species of hard spheres or disks: theta = T_r / T and the cooling rates of the cooling
+/// state, or theta under white noise on translation (docs/derivations/rough-hcs.md).
+void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j, nlohmann::json& applies) {
+  if (scene.species.size() != 1 || scene.collision.kernel != CollisionKernel::hard_sphere || scene.shear_rate != 0.0)
+    return;
+  const CollisionConfig& c = scene.collision;
+  const int d = scene.run.dimension;
+  const double alpha = c.restitution[0][0], beta = c.tangential_restitution, kappa = c.reduced_inertia;
+  nlohmann::json r = {{"alpha", alpha},
+                      {"beta", beta},
+                      {"kappa", kappa},
+                      {"tangential_factor", theory::rough_tangential_factor(beta, kappa)}};
+  const std::string particles = d == 2 ? "rough hard disks" : "rough hard spheres";
+  if (scene.thermostat.kind == ThermostatKind::none) {
+    const double theta = theory::rough_hcs_theta(alpha, beta, kappa, d);
+    const theory::RoughCoolingRates z = theory::rough_cooling_rates(alpha, beta, kappa, theta, d);
+    r["theta_hcs"] = theta;
+    r["cooling_rate_over_nu_hcs"] = z.translation;
+    applies.push_back("homogeneous cooling state, monodisperse " + particles +
+                      ", Maxwellian approximation: T_rot / T_tr and the cooling rate (Huthmann and Zippelius 1997; "
+                      "docs/derivations/rough-hcs.md)");
+  } else if (scene.thermostat.kind == ThermostatKind::white_noise) {
+    r["theta_white_noise"] = theory::rough_white_noise_theta(beta, kappa);
+    applies.push_back("white noise on translation, monodisperse " + particles +
+                      ", Maxwellian approximation: the steady T_rot / T_tr (docs/derivations/rough-hcs.md)");
+  }
+  j["rough"] = r;
+}
+
 }  // namespace
 
 nlohmann::json scene_theory_json(const Scene& scene) {
@@ -235,9 +265,12 @@ nlohmann::json scene_theory_json(const Scene& scene) {
   if (!scene.intruder) j["dimension"] = scene.run.dimension;
   nlohmann::json applies = nlohmann::json::array();
   const std::vector<double> times = sample_times(scene.run);
-  for (auto add : {add_cooling_state, add_scaled_state, add_mixture, add_intruder, add_kernel_form, add_enskog_chi,
-                   add_viscosity, add_steady_shear})
-    add(scene, times, j, applies);
+  using Add = void (*)(const Scene&, const std::vector<double>&, nlohmann::json&, nlohmann::json&);
+  // Rough particles have their own theory; the smooth gas's predictions do not apply to them.
+  const std::vector<Add> smooth = {add_cooling_state, add_scaled_state, add_mixture,   add_intruder,
+                                   add_kernel_form,   add_enskog_chi,   add_viscosity, add_steady_shear};
+  const std::vector<Add> rough_particles = {add_rough, add_enskog_chi};
+  for (Add add : !scene.intruder && rough(scene.collision) ? rough_particles : smooth) add(scene, times, j, applies);
   j["applies"] = applies;
   return j;
 }

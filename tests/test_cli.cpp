@@ -140,6 +140,20 @@ TEST_F(Cli, HardDisksHaveTheirTheoryAndRun) {
   EXPECT_NE(event.stderr_text.find("run.dimension = 2"), std::string::npos) << event.stderr_text;
 }
 
+TEST_F(Cli, RoughParticlesHaveTheirTheoryAndAreNotRunYet) {
+  write("rough.toml", good_scene + "tangential_restitution = 0.5\n");
+  const Outcome o = granmc("theory rough.toml");
+  ASSERT_EQ(o.status, 0) << o.stderr_text;
+  const nlohmann::json j = nlohmann::json::parse(o.stdout_text);
+  EXPECT_GT(j["rough"]["theta_hcs"].get<double>(), 0.0);
+  EXPECT_EQ(j["rough"]["kappa"], 0.4);
+  EXPECT_FALSE(j.contains("cooling_state"));  // the smooth gas's Haff law does not apply
+  const Outcome run = granmc("run rough.toml");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.stderr_text.find("collision.tangential_restitution"), std::string::npos) << run.stderr_text;
+  EXPECT_TRUE(outputs().empty());
+}
+
 TEST_F(Cli, BathPrintsTheIntrudersFluxesAndSampledLaw) {  // 002 Figs. 1-2 (drivers/plot_bath.py)
   write("bath.toml", R"([run]
 method = "gillespie"

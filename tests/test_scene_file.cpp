@@ -657,6 +657,23 @@ TEST(SceneFile, OddKeysStayOnOneLine) {
   expect_rejected("\"with space\" = 1\n" + kGas, "\"with space\"", "unknown key");
 }
 
+TEST(SceneFile, RoughParticles) {
+  const Scene smooth = parse_scene(kGas, kPath);
+  EXPECT_EQ(smooth.collision.tangential_restitution, -1.0);
+  EXPECT_FALSE(rough(smooth.collision));
+  EXPECT_EQ(smooth.collision.reduced_inertia, 0.4);  // a uniform sphere
+  const Scene s = parse_scene(kGas + "[collision]\ntangential_restitution = 0.5\nreduced_inertia = 0.25\n", kPath);
+  EXPECT_TRUE(rough(s.collision));
+  EXPECT_EQ(s.collision.tangential_restitution, 0.5);
+  EXPECT_EQ(s.collision.reduced_inertia, 0.25);
+  const Scene disks = parse_scene("[run]\nt_end = 1.0\ndt = 0.01\ndimension = 2\n" + kSpecies, kPath);
+  EXPECT_EQ(disks.collision.reduced_inertia, 0.5);  // a uniform disk
+  expect_rejected(kGas + "[collision]\ntangential_restitution = 1.5\n", "collision.tangential_restitution",
+                  "outside [-1, 1]");
+  expect_rejected(kGas + "[collision]\nreduced_inertia = 0\n", "collision.reduced_inertia", "outside (0, 1]");
+  expect_rejected(kGas + "[collision]\nreduced_inertia = \"big\"\n", "collision.reduced_inertia", "(0, 1]");
+}
+
 TEST(SceneFile, GasDimension) {
   EXPECT_EQ(parse_scene(kGas, kPath).run.dimension, 3);
   EXPECT_EQ(parse_scene("[run]\nt_end = 1.0\ndt = 0.01\ndimension = 2\n" + kSpecies, kPath).run.dimension, 2);

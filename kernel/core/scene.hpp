@@ -63,8 +63,13 @@ struct CollisionConfig {
   double lambda = 1.0;                                                         // VHS exponent in [0, 1]
   double rate = 0.0;                                                           // >= 0; Gamba form (001) when > 0
   std::array<std::array<double, 2>, 2> restitution{{{1.0, 1.0}, {1.0, 1.0}}};  // alpha_ij in [0, 1], symmetric
-  double packing_fraction = 0.0;  // in [0, 1); > 0 switches on Enskog chi_ij (000 eq. 3)
+  double packing_fraction = 0.0;         // in [0, 1); > 0 switches on Enskog chi_ij (000 eq. 3)
+  double tangential_restitution = -1.0;  // beta in [-1, 1]; -1: smooth particles, > -1: rough
+  double reduced_inertia = 0.4;          // kappa = 4 I / (m sigma^2) in (0, 1]; default 2/5 (1/2 for disks)
 };
+
+/// Whether the scene's particles are rough (collision.tangential_restitution > -1).
+inline bool rough(const CollisionConfig& c) noexcept { return c.tangential_restitution > -1.0; }
 
 struct ThermostatConfig {
   ThermostatKind kind = ThermostatKind::none;

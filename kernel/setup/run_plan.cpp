@@ -160,6 +160,8 @@ SteppedPlan stepped_plan(const Scene& scene, Spread spread) {
 }  // namespace
 
 RunPlan make_plan(const Scene& scene, Spread spread) {
+  if (!scene.intruder && rough(scene.collision))
+    refuse("rough particles (collision.tangential_restitution > -1; their theory is in `granmc theory`)");
   if (scene.intruder) {
     SchemeChoice scheme = intruder_plan(scene);
     if (spread == Spread::particles) refuse_spread("an [intruder] scene");

@@ -12,11 +12,12 @@ namespace granmc::theory {
 
 namespace {
 
-/// A homogeneous hard-sphere DSMC scene whose scaled state is the HCS one (no shear, no relaxation,
+/// A homogeneous DSMC scene of smooth hard spheres whose scaled state is the HCS one (no shear, no relaxation,
 /// no white noise).
 bool hcs_scaled_state(const Scene& scene) {
   return scene.run.method == Method::dsmc && scene.collision.kernel == CollisionKernel::hard_sphere &&
-         scene.thermostat.kind != ThermostatKind::white_noise && scene.shear_rate == 0.0 && !scene.relaxation;
+         !rough(scene.collision) && scene.thermostat.kind != ThermostatKind::white_noise && scene.shear_rate == 0.0 &&
+         !scene.relaxation;
 }
 
 }  // namespace

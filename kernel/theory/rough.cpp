@@ -1,0 +1,34 @@
+#include "kernel/theory/rough.hpp"
+
+#include <cmath>
+
+namespace granmc::theory {
+
+double rough_tangential_factor(double beta, double kappa) noexcept {
+  return (1.0 + beta) * kappa / (2.0 * (1.0 + kappa));
+}
+
+RoughCoolingRates rough_cooling_rates(double alpha, double beta, double kappa, double theta, int dimension) noexcept {
+  const double b = rough_tangential_factor(beta, kappa);
+  const double d = dimension, rotations = d * (d - 1.0) / 2.0, c = 2.0 * (d - 1.0);
+  return {((1.0 - alpha * alpha) + c * (b - b * b * (1.0 + theta / kappa))) / d,
+          c * (b / kappa) * (1.0 - b * (1.0 / theta + 1.0 / kappa)) / rotations};
+}
+
+double rough_hcs_theta(double alpha, double beta, double kappa, int dimension) noexcept {
+  const double b = rough_tangential_factor(beta, kappa);
+  if (b == 0.0) return 0.0;
+  const double d = dimension, rotations = d * (d - 1.0) / 2.0, c = 2.0 * (d - 1.0);
+  // theta (zeta_tr - zeta_rot) = q2 theta^2 + q1 theta + q0 = 0, with q2 < 0 < q0: one positive root.
+  const double q2 = -c * b * b / (kappa * d);
+  const double q1 = ((1.0 - alpha * alpha) + c * (b - b * b)) / d - c * (b / kappa) * (1.0 - b / kappa) / rotations;
+  const double q0 = c * b * b / (kappa * rotations);
+  return (-q1 - std::sqrt(q1 * q1 - 4.0 * q2 * q0)) / (2.0 * q2);
+}
+
+double rough_white_noise_theta(double beta, double kappa) noexcept {
+  const double b = rough_tangential_factor(beta, kappa);
+  return b * kappa / (kappa - b);
+}
+
+}  // namespace granmc::theory

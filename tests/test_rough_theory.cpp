@@ -1,0 +1,54 @@
+// The theory of rough hard spheres and disks (kernel/theory/rough.hpp) against its exact limits and the table of
+// docs/derivations/rough_hcs.py (which checks the rates against the collision rule by Monte Carlo).
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "kernel/theory/rough.hpp"
+
+using namespace granmc::theory;
+
+TEST(RoughTheory, SmoothParticlesCoolAsTheSmoothGasAndDoNotRotate) {
+  for (int d : {3, 2}) {
+    EXPECT_EQ(rough_hcs_theta(0.8, -1.0, 0.4, d), 0.0);
+    EXPECT_DOUBLE_EQ(rough_cooling_rates(0.8, -1.0, 0.4, 1.0, d).translation, (1.0 - 0.64) / d);  // zeta / nu
+    EXPECT_EQ(rough_cooling_rates(0.8, -1.0, 0.4, 1.0, d).rotation, 0.0);
+  }
+  EXPECT_EQ(rough_white_noise_theta(-1.0, 0.4), 0.0);
+}
+
+TEST(RoughTheory, PerfectlyRoughElasticParticlesConserveEnergyAndShareItEqually) {
+  for (int d : {3, 2}) {
+    const double rotations = d * (d - 1) / 2.0;
+    for (double kappa : {0.1, 0.4, 2.0 / 3.0, 1.0}) {
+      for (double theta : {0.2, 1.0, 3.0}) {  // (d/2) dT + (d_r/2) dT_r = 0 at every theta
+        const RoughCoolingRates z = rough_cooling_rates(1.0, 1.0, kappa, theta, d);
+        // to the rounding of terms of order 1 (a few 1e-16 each)
+        EXPECT_NEAR(d * z.translation + rotations * theta * z.rotation, 0.0, 1e-14) << d << " " << kappa;
+      }
+      EXPECT_NEAR(rough_hcs_theta(1.0, 1.0, kappa, d), 1.0, 1e-12);  // equipartition
+      EXPECT_NEAR(rough_white_noise_theta(1.0, kappa), 1.0, 1e-15);
+    }
+  }
+}
+
+TEST(RoughTheory, CoolingStateHasEqualRatesAndMatchesTheDerivationsTable) {
+  // Rows of `docs/derivations/rough_hcs.py` (d, alpha, beta, kappa, theta, zeta / nu).
+  struct Row {
+    int d;
+    double alpha, beta, kappa, theta, zeta;
+  };
+  for (const Row& r :
+       {Row{3, 0.9, -0.5, 0.4, 0.3426268733, 0.1459417198}, Row{3, 0.9, 0.5, 0.4, 0.8670773813, 0.1551072035},
+        Row{3, 0.7, 0.0, 0.4, 1.2192059625, 0.2503261250}, Row{2, 0.9, 0.0, 0.5, 0.4695348380, 0.2078036201},
+        Row{2, 0.7, 1.0, 0.5, 1.4898852557, 0.1461366098}, Row{2, 0.7, -0.5, 0.5, 4.3226763258, 0.2713517177}}) {
+    const double theta = rough_hcs_theta(r.alpha, r.beta, r.kappa, r.d);
+    const RoughCoolingRates z = rough_cooling_rates(r.alpha, r.beta, r.kappa, theta, r.d);
+    EXPECT_NEAR(theta, r.theta, 1e-9) << r.d << " " << r.alpha << " " << r.beta;
+    EXPECT_NEAR(z.translation, r.zeta, 1e-9);
+    EXPECT_NEAR(z.rotation, z.translation, 1e-13);  // the cooling state: one rate
+  }
+  // White noise on translation: theta = b kappa / (kappa - b), b = (1 + beta) kappa / (2 (1 + kappa)).
+  EXPECT_NEAR(rough_white_noise_theta(0.0, 0.4), 0.2222222222, 1e-10);
+  EXPECT_NEAR(rough_white_noise_theta(0.5, 0.5), 0.5, 1e-15);
+}
