@@ -155,3 +155,39 @@ TEST(GaussianThermostat, MixtureStateDoesNotDependOnTheTimeStep) {
   // Bound: measured today 0.0066; bound 1.5x.
   EXPECT_TRUE(within_ci("gamma, dt = 0.02 against dt = 0.002", a.mean, a.ci + b.ci, b.mean, 0.010));
 }
+
+TEST(GaussianThermostat, HeatedDisksHoldTheirTemperatureAndTheCoolingStatesA2) {
+  // Hard disks (run.dimension = 2) at alpha = 0.8 with zeta the cooling rate: T stays T(0), and the scaled state
+  // is the HCS one (000 sec. 2 holds in any dimension), whose a2 the d = 2 Sonine theory gives. Time averages
+  // after t = 4 (about 14 collisions per particle).
+  const Scene s = scene_from_toml(R"(
+    [run]
+    seed = 18
+    replicas = 16
+    t_end = 10.0
+    dt = 0.01
+    samples = 20
+    dimension = 2
+
+    [[species]]
+    particles = 20000
+
+    [collision]
+    restitution = 0.8
+
+    [thermostat]
+    kind = "gaussian"
+    zeta = "cooling-rate"
+  )");
+  const RunResult r = run_scene(s, {});
+  for (const ReplicaSeries& rep : r.replicas)
+    for (std::size_t k = 0; k < r.times.size(); ++k) EXPECT_NEAR(rep.temperature[k] / rep.temperature[0], 1.0, 1e-12);
+  const auto theory = theory::scaled_state(s);
+  ASSERT_TRUE(theory);
+  const MeanCI a2 = late_average(r, 8, [](const ReplicaSeries& rep, std::size_t k) { return rep.species[0].a2[k]; });
+  std::printf("[ measured ] disks, HSS a2 = %.5f +- %.5f (first Sonine %.5f, model error %.5f; second Sonine %.5f)\n",
+              a2.mean, a2.ci, theory->a2, theory->a2_model_error, theory->a2_second_sonine);
+  // Bound 0.5 |a2|: the CI resolves a2 from zero.
+  EXPECT_TRUE(within_ci("disks, HSS a2", a2, theory->a2, 0.5 * std::fabs(theory->a2), theory->a2_model_error));
+  EXPECT_LT(a2.mean + a2.ci, 0.0);
+}
