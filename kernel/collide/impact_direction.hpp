@@ -49,26 +49,6 @@ void impact_variates(std::span<const double, N> u1, std::span<const double, N> u
     lambert_circle_vectors(u1, x, y, z);
 }
 
-/// A direction uniform on the unit sphere (d = 3) or circle (d = 2) from two uniforms: sigma-hat of the
-/// paper's form, drawn before the acceptance (schemes/collision_stage.hpp, with a collision shift).
-template <int d>
-Vec3 uniform_direction(double u1, double u2) noexcept {
-  if constexpr (d == 3)
-    return unit_vector(u1, u2);
-  else
-    return circle_vector(u2);
-}
-
-/// uniform_direction lane by lane (the same bits).
-template <int d, std::size_t N>
-void uniform_directions(std::span<const double, N> u1, std::span<const double, N> u2, std::span<double, N> x,
-                        std::span<double, N> y, std::span<double, N> z) noexcept {
-  if constexpr (d == 3)
-    unit_vectors(u1, u2, x, y, z);
-  else
-    circle_vectors(u2, x, y, z);
-}
-
 /// impact_direction component by component, for a double or an xsimd batch of them (a register of
 /// candidates, each lane the same bits as impact_direction on it): sigma-hat = (sx, sy, sz), g.sigma.
 template <int d, class T>

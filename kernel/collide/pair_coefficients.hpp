@@ -10,8 +10,7 @@ namespace granmc {
 struct PairCoefficients {
   int i = 0, j = 0;             // species of particle k and of particle l
   double rate_prefactor = 0.0;  // 4 pi sigma_ij^2 n_j chi_ij (000 sec. 3; disks 2 pi sigma_ij n_j chi_ij), or
-                                // 16 pi rate in the kernel form
-                                // of 001 (collision.rate > 0): omega_kl / Kernel::rate
+                                // 16 pi rate in the kernel form of 001 (collision.rate > 0): omega_kl / Kernel::rate
   double mu_ji = 0.0;           // m_j / (m_i + m_j), moves particle k (000 eq. 14)
   double mu_ij = 0.0;           // m_i / (m_i + m_j), moves particle l (000 eq. 15)
   double one_plus_alpha = 2.0;  // 1 + alpha_ij

@@ -26,8 +26,8 @@ inline std::pair<double, double> stationary_window(const std::vector<double>& ti
 struct SpeciesSeries {
   std::vector<double> temperature;      // T_i = m_i <V^2> / d (energy units)
   std::vector<double> log_temperature;  // ln T_i, finite where T_i underflows
-  std::vector<double> a2;               // (3/5) <V^4> / <V^2>^2 - 1
-  std::vector<double> a3;               // 1 + 3 a2 - (9/35) <V^6> / <V^2>^3 (third Sonine coefficient)
+  std::vector<double> a2;               // d/(d+2) <V^4> / <V^2>^2 - 1 (observe/moments.hpp)
+  std::vector<double> a3;               // third Sonine coefficient (observe/moments.hpp)
   std::vector<double> speed_counts;     // histogram of v* = |V| / v0 over the stationary samples
                                         // (observe/speed_histogram.hpp), output.histogram shells; for
                                         // weighted particles the weight in each shell in units of 1 / N_i
