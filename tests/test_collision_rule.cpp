@@ -154,7 +154,7 @@ TEST(ImpactDirection, HasTheDensityOfTheCollisionKernel) {
 TEST(ImpactDirection, HasTheDensityOfTheCollisionKernelForDisks) {
   constexpr int bins = 20, n = 1'000'000;
   constexpr double chi2_999_19 = 43.8202;
-  const RandomStream rng(20261204, 3);
+  const RandomStream rng(2, 3);
   for (const Vec3 g : {Vec3{2.5, 0.0, 0.0}, Vec3{-1.3, 0.4, 0.0}, Vec3{3e-9, -2e-9, 0.0}}) {
     SCOPED_TRACE(::testing::Message() << "g = (" << g.x << ", " << g.y << ")");
     const double g_norm = norm(g);

@@ -20,15 +20,17 @@ using granmc::testing::within_ci;
 
 namespace {
 
-/// One species with the Gaussian thermostat; `zeta` is thermostat.zeta as TOML: R"("cooling-rate")" or a number.
-Scene gas(double alpha, int replicas, std::int64_t particles, TomlValue zeta) {
+/// One species with the Gaussian thermostat; `zeta` is thermostat.zeta as TOML: R"("cooling-rate")" or a number;
+/// spheres, or disks (dimension 2).
+Scene gas(double alpha, int replicas, std::int64_t particles, TomlValue zeta, int dimension = 3, double t_end = 2.0) {
   constexpr std::string_view text = R"(
     [run]
     seed = 16
     replicas = ${replicas}
-    t_end = 2.0
+    t_end = ${t_end}
     dt = 0.01
     samples = 20
+    dimension = ${dimension}
 
     [[species]]
     particles = ${particles}
@@ -40,7 +42,12 @@ Scene gas(double alpha, int replicas, std::int64_t particles, TomlValue zeta) {
     kind = "gaussian"
     zeta = ${zeta}
   )";
-  return scene_from_toml(text, {{"replicas", replicas}, {"particles", particles}, {"alpha", alpha}, {"zeta", zeta}});
+  return scene_from_toml(text, {{"replicas", replicas},
+                                {"particles", particles},
+                                {"alpha", alpha},
+                                {"zeta", zeta},
+                                {"dimension", dimension},
+                                {"t_end", t_end}});
 }
 
 /// A binary mixture in the spirit of 000 Fig. 3 (mu = m1/m2 = 2, omega = 1, delta = n1/n2 = 2), with the
@@ -160,25 +167,7 @@ TEST(GaussianThermostat, HeatedDisksHoldTheirTemperatureAndTheCoolingStatesA2) {
   // Hard disks (run.dimension = 2) at alpha = 0.8 with zeta the cooling rate: T stays T(0), and the scaled state
   // is the HCS one (000 sec. 2 holds in any dimension), whose a2 the d = 2 Sonine theory gives. Time averages
   // after t = 4 (about 14 collisions per particle).
-  const Scene s = scene_from_toml(R"(
-    [run]
-    seed = 18
-    replicas = 16
-    t_end = 10.0
-    dt = 0.01
-    samples = 20
-    dimension = 2
-
-    [[species]]
-    particles = 20000
-
-    [collision]
-    restitution = 0.8
-
-    [thermostat]
-    kind = "gaussian"
-    zeta = "cooling-rate"
-  )");
+  const Scene s = gas(0.8, 16, 20000, R"("cooling-rate")", 2, 10.0);
   const RunResult r = run_scene(s, {});
   for (const ReplicaSeries& rep : r.replicas)
     for (std::size_t k = 0; k < r.times.size(); ++k) EXPECT_NEAR(rep.temperature[k] / rep.temperature[0], 1.0, 1e-12);
