@@ -21,6 +21,7 @@
 
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/sampling.hpp"
+#include "kernel/core/unfused.hpp"
 #include "kernel/core/vec3.hpp"
 
 namespace granmc {
@@ -64,8 +65,9 @@ void impact_direction_components(const T& gx, const T& gy, const T& gz, const T&
     g_sigma = inverse * (gx * hx + gy * hy + gz * hz);
   } else {  // n = (cos theta, sin theta, 0)
     const T inverse = 1.0 / g_norm;
-    sx = inverse * (nx * gx - ny * gy);
-    sy = inverse * (nx * gy + ny * gx);
+    // Each product rounded on its own, in the scalar form as in SIMD (core/unfused.hpp).
+    sx = inverse * (unfused(nx * gx) - unfused(ny * gy));
+    sy = inverse * (unfused(nx * gy) + unfused(ny * gx));
     sz = T(0.0);
     g_sigma = nx * g_norm;
   }
