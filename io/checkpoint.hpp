@@ -20,7 +20,7 @@
 
 namespace granmc {
 
-inline constexpr std::uint32_t checkpoint_format_version = 3;
+inline constexpr std::uint32_t checkpoint_format_version = 4;
 
 struct Checkpoint {
   std::string build;       // io/build_id.hpp of the build that wrote it

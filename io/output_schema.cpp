@@ -292,6 +292,42 @@ std::vector<OutputRecord> declare() {
         return rows(
             o.result, [&](const ReplicaSeries& s) -> const auto& { return s.species[i].speed_counts; });
       });
+  // Rough particles (collide/rough_rule.hpp): spins, only where the scene has them.
+  auto rough_series = [&](const std::string& leaf, const std::string& units, const std::string& what,
+                          MeanCISeries SpeciesReport::*stats, std::vector<double> SpeciesSeries::*member) {
+    add("species/{species}/" + leaf, K::series, ST, units, what + " at the sample times (rough particles); " + ci_text,
+        [stats](const RunOutput& o, std::size_t i) -> Value {
+          if ((o.report.species[i].*stats).mean.empty()) return {};
+          return o.report.species[i].*stats;
+        });
+    add("species/{species}/" + leaf + "/replicas", K::rows, H, units,
+        what + " of each replica (rows) at each sample time (columns), rough particles",
+        [stats, member](const RunOutput& o, std::size_t i) -> Value {
+          if ((o.report.species[i].*stats).mean.empty()) return {};
+          return rows(
+              o.result, [&](const ReplicaSeries& s) -> const auto& { return s.species[i].*member; });
+        });
+  };
+  auto rough_last_half = [&](const std::string& leaf, const std::string& what,
+                             std::optional<MeanCI> SpeciesReport::*stats) {
+    add("species/{species}/" + leaf, K::mean_ci, S, "",
+        what + " over the last half of the samples (rough particles): per-replica time average, then " +
+            std::string(ci_text),
+        [stats](const RunOutput& o, std::size_t i) -> Value {
+          if (!(o.report.species[i].*stats)) return {};
+          return *(o.report.species[i].*stats);
+        });
+  };
+  rough_series("rotational_temperature", "energy",
+               "rotational temperature T_rot,i = I_i <omega^2> / d_r (d_r = 3 for spheres, 1 for disks)",
+               &SpeciesReport::rotational_temperature, &SpeciesSeries::rotational_temperature);
+  rough_last_half("rotational_ratio", "theta = T_rot,i / T_i", &SpeciesReport::rotational_ratio);
+  rough_series("a02", "", "the spins' kurtosis cumulant a02 = d_r/(d_r + 2) <omega^4>/<omega^2>^2 - 1",
+               &SpeciesReport::a02, &SpeciesSeries::a02);
+  rough_last_half("a02_last_half", "a02", &SpeciesReport::a02_last_half);
+  rough_series("a11", "", "the correlation a11 = <V^2 omega^2> / (<V^2> <omega^2>) - 1 of translation and rotation",
+               &SpeciesReport::a11, &SpeciesSeries::a11);
+  rough_last_half("a11_last_half", "a11", &SpeciesReport::a11_last_half);
   add("temperature_ratio", K::mean_ci, S, "",
       "T_1/T_2 over the last half of the samples (two species): per-replica time average, then " + std::string(ci_text),
       [](const RunOutput& o, std::size_t) -> Value {

@@ -32,8 +32,8 @@ namespace granmc {
 /// The format of the files: a reader refuses a major version it does not know (a record renamed, moved
 /// or given another meaning); a minor version adds records only.
 inline constexpr int output_format_major = 2;
-inline constexpr int output_format_minor = 6;
-/// "2.6": the format_version attribute of every HDF5 file and key of every summary.
+inline constexpr int output_format_minor = 7;
+/// "2.7": the format_version attribute of every HDF5 file and key of every summary.
 std::string output_format_version();
 
 enum class RecordKind { text, number, count, flag, numbers, mean_ci, series, rows, count_rows, group };

@@ -39,6 +39,7 @@ Checkpoint small_checkpoint() {
   f.initial_majorant = {3.5};
   DsmcSnapshot& d = f.state.emplace<DsmcSnapshot>();
   d.velocities = {{0.1, 0.2, 0.3, -0.4, -0.5, -0.6}, {1.5, 2.5, 3.5}};
+  d.spins = {{0.0, 0.0, 0.75, 0.0, 0.0, -0.125}, {0.5, -1.5, 2.0}};  // rough particles
   d.step = 41, d.time = 0.41, d.omega_max = {3.75}, d.carried = {0.25};
   d.total.collisions = 99, d.pair_totals = {d.total}, d.transfer_integral.xy = -0.125;
   c.in_flight.emplace(1, f);
@@ -72,6 +73,7 @@ TEST(CheckpointFile, RoundTripKeepsTheIdentityAndEveryReplica) {
   EXPECT_EQ(f.initial_majorant, g.initial_majorant);
   const DsmcSnapshot &d = std::get<DsmcSnapshot>(f.state), &dg = std::get<DsmcSnapshot>(g.state);
   EXPECT_EQ(d.velocities, dg.velocities);
+  EXPECT_EQ(d.spins, dg.spins);
   EXPECT_EQ(d.step, 41u);
   EXPECT_EQ(d.omega_max, dg.omega_max);
   EXPECT_EQ(d.carried, dg.carried);

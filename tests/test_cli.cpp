@@ -140,7 +140,7 @@ TEST_F(Cli, HardDisksHaveTheirTheoryAndRun) {
   EXPECT_NE(event.stderr_text.find("run.dimension = 2"), std::string::npos) << event.stderr_text;
 }
 
-TEST_F(Cli, RoughParticlesHaveTheirTheoryAndAreNotRunYet) {
+TEST_F(Cli, RoughParticlesHaveTheirTheoryAndRun) {
   write("rough.toml", good_scene + "tangential_restitution = 0.5\n");
   const Outcome o = granmc("theory rough.toml");
   ASSERT_EQ(o.status, 0) << o.stderr_text;
@@ -148,10 +148,28 @@ TEST_F(Cli, RoughParticlesHaveTheirTheoryAndAreNotRunYet) {
   EXPECT_GT(j["rough"]["theta_hcs"].get<double>(), 0.0);
   EXPECT_EQ(j["rough"]["kappa"], 0.4);
   EXPECT_FALSE(j.contains("cooling_state"));  // the smooth gas's Haff law does not apply
-  const Outcome run = granmc("run rough.toml");
-  EXPECT_EQ(run.status, 2);
-  EXPECT_NE(run.stderr_text.find("collision.tangential_restitution"), std::string::npos) << run.stderr_text;
-  EXPECT_TRUE(outputs().empty());
+  const Outcome run = granmc("run rough.toml --summary rough.json --quiet");
+  ASSERT_EQ(run.status, 0) << run.stderr_text;
+  const nlohmann::json summary = nlohmann::json::parse(slurp(dir_ / "rough.json"));
+  const nlohmann::json& species = summary["species"][0];
+  EXPECT_GT(species["rotational_ratio"]["mean"].get<double>(), 0.0);
+  EXPECT_TRUE(species.contains("a02_last_half") && species.contains("a11_last_half"));
+  EXPECT_TRUE(species.contains("rotational_temperature"));
+  const Outcome explain = granmc("run rough.toml --explain");
+  EXPECT_NE(explain.stdout_text.find("rough-hard-sphere"), std::string::npos) << explain.stdout_text;
+  // A smooth scene has none of the rough records.
+  write("smooth.toml", good_scene);
+  ASSERT_EQ(granmc("run smooth.toml --summary smooth.json --quiet").status, 0);
+  EXPECT_FALSE(nlohmann::json::parse(slurp(dir_ / "smooth.json"))["species"][0].contains("rotational_ratio"));
+  // What rough particles do not run yet is refused with the key named.
+  write("rough_mixture.toml", good_scene + "tangential_restitution = 0.5\n" + R"(
+[[species]]
+name = "b"
+particles = 500
+)");
+  const Outcome mixture = granmc("run rough_mixture.toml");
+  EXPECT_EQ(mixture.status, 2);
+  EXPECT_NE(mixture.stderr_text.find("collision.tangential_restitution"), std::string::npos) << mixture.stderr_text;
 }
 
 TEST_F(Cli, BathPrintsTheIntrudersFluxesAndSampledLaw) {  // 002 Figs. 1-2 (drivers/plot_bath.py)

@@ -102,7 +102,9 @@ ReplicaSeries filled_replica(int r, bool intruder) {
                    std::numeric_limits<double>::denorm_min(),
                    0.1 * r};
   s.log_temperature = doubles(6);
-  for (int i = 0; i < 2; ++i) s.species.push_back({doubles(6), doubles(6), doubles(6), doubles(6), doubles(11)});
+  for (int i = 0; i < 2; ++i)
+    s.species.push_back(
+        {doubles(6), doubles(6), doubles(6), doubles(6), doubles(11), doubles(6), doubles(6), doubles(6)});
   s.momentum = {{1.0, 2.0, 3.0 + r}, {-4.0, 5.5, -0.0}};
   s.momentum_relative = doubles(6);
   s.collisions = doubles(6);

@@ -46,6 +46,11 @@ void check_shapes(const RunResult& result) {
       require_length(sp.log_temperature.size(), samples, "species log_temperature", r);
       require_length(sp.a2.size(), samples, "species a2", r);
       require_length(sp.a3.size(), samples, "species a3", r);
+      if (!sp.rotational_temperature.empty() || !s.species.front().rotational_temperature.empty()) {
+        require_length(sp.rotational_temperature.size(), samples, "species rotational_temperature", r);
+        require_length(sp.a02.size(), samples, "species a02", r);
+        require_length(sp.a11.size(), samples, "species a11", r);
+      }
     }
   }
 }
@@ -119,6 +124,21 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
         result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a3; });
     sp.a3_last_half =
         last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a3[k]; });
+    if (!result.replicas.front().species[i].rotational_temperature.empty()) {  // rough particles
+      sp.rotational_temperature = per_time(
+          result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].rotational_temperature; });
+      sp.rotational_ratio = last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) {
+        return s.species[i].rotational_temperature[k] / s.species[i].temperature[k];
+      });
+      sp.a02 = per_time(
+          result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a02; });
+      sp.a02_last_half =
+          last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a02[k]; });
+      sp.a11 = per_time(
+          result, [i](const ReplicaSeries& s) -> const auto& { return s.species[i].a11; });
+      sp.a11_last_half =
+          last_half_average(result, [i](const ReplicaSeries& s, std::size_t k) { return s.species[i].a11[k]; });
+    }
     const std::size_t shells = result.replicas.front().species[i].speed_counts.size();
     if (shells > 0 && i < scene.species.size()) {
       if (report.speed_shell_edges.empty())

@@ -26,6 +26,13 @@ struct SpeciesReport {
   MeanCISeries a3;           // 1 + 3 a2 - (9/35) <V^6>/<V^2>^3, dimensionless
   MeanCI a3_last_half;
   MeanCISeries speed_distribution;  // Phi_i(v*) per speed shell over the last half (000 eq. 19), per d^3 v*
+  // Rough particles only (empty otherwise):
+  MeanCISeries rotational_temperature;     // T_rot,i(t) = I_i <omega^2> / d_r, energy units
+  std::optional<MeanCI> rotational_ratio;  // theta = T_rot,i / T_i over the last half (as temperature_ratio)
+  MeanCISeries a02;                        // d_r/(d_r+2) <omega^4>/<omega^2>^2 - 1
+  std::optional<MeanCI> a02_last_half;
+  MeanCISeries a11;  // <V^2 omega^2> / (<V^2> <omega^2>) - 1
+  std::optional<MeanCI> a11_last_half;
 };
 
 struct RunReport {

@@ -42,6 +42,13 @@ concept SteppedKernel = requires(const K& kernel, double g_sigma, double g2, dou
   { kernel.mean_bound(speed) } -> std::same_as<double>;
 };
 
+/// Whether a kernel's particles are rough (collide/hard_sphere.hpp): they spin, and collide by
+/// collide/rough_rule.hpp.
+template <class K>
+inline constexpr bool rough_kernel = requires {
+  requires K::rough;
+};
+
 template <class K>
 concept EventKernel = requires(const K& kernel, std::span<double, 64> uniforms) {
   { K::name } -> std::convertible_to<const char*>;

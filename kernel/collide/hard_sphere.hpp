@@ -18,16 +18,24 @@
 
 namespace granmc {
 
-/// Hard cores in d = 3 (spheres) or d = 2 (disks).
-template <int d>
+/// Hard cores in d = 3 (spheres) or d = 2 (disks), smooth or `is_rough`: rough particles collide at the
+/// same rate (the rate follows the centres' g.sigma) by the rule of collide/rough_rule.hpp, and spin.
+template <int d, bool is_rough = false>
 struct HardCore {
   static_assert(d == 2 || d == 3);
   static constexpr int dimension = d;
+  static constexpr bool rough = is_rough;
   static constexpr double lambda = 1.0;
-  static constexpr const char* name = d == 3 ? "hard-sphere" : "hard-disk";
+  static constexpr const char* name =
+      d == 3 ? (rough ? "rough-hard-sphere" : "hard-sphere") : (rough ? "rough-hard-disk" : "hard-disk");
   static constexpr const char* explanation =
-      d == 3 ? "hard spheres: omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3)"
-             : "hard disks: omega_kl = 2 pi sigma_ij n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3 in d = 2)";
+      d == 3 ? (rough ? "rough hard spheres: omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. "
+                        "3), normal and tangential restitution (collide/rough_rule.hpp)"
+                      : "hard spheres: omega_kl = 4 pi sigma_ij^2 n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3)")
+             : (rough ? "rough hard disks: omega_kl = 2 pi sigma_ij n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3 "
+                        "in d = 2), normal and tangential restitution (collide/rough_rule.hpp)"
+                      : "hard disks: omega_kl = 2 pi sigma_ij n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3 in d = "
+                        "2)");
   /// The mean of Theta(g.sigma) (g.sigma) / |g| over sigma-hat uniform on the unit sphere (circle).
   static constexpr double mean_g_sigma = d == 3 ? 0.25 : std::numbers::inv_pi;
   template <class Scene>
@@ -52,7 +60,10 @@ struct HardCore {
 
 using HardSphere = HardCore<3>;
 using HardDisk = HardCore<2>;
+using RoughHardSphere = HardCore<3, true>;
+using RoughHardDisk = HardCore<2, true>;
 
 static_assert(SteppedKernel<HardSphere> && EventKernel<HardSphere> && SteppedKernel<HardDisk>);
+static_assert(SteppedKernel<RoughHardSphere> && SteppedKernel<RoughHardDisk>);
 
 }  // namespace granmc

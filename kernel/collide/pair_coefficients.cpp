@@ -43,6 +43,14 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       p.reduced_mass = a.mass * b.mass / (a.mass + b.mass);
       p.energy_loss = 0.5 * (1.0 - alpha * alpha) * a.mass * b.mass / (a.mass + b.mass);
       p.diameter = sigma_ij;
+      if (rough(scene.collision)) {  // collide/rough_rule.hpp
+        const double kappa = scene.collision.reduced_inertia, beta = scene.collision.tangential_restitution;
+        p.tangential = (1.0 + beta) / (1.0 + p.reduced_mass * (1.0 / (kappa * a.mass) + 1.0 / (kappa * b.mass)));
+        p.tangential_k = p.mu_ji * p.tangential;
+        p.tangential_l = p.mu_ij * p.tangential;
+        p.spin_k = p.tangential_k / kappa;
+        p.spin_l = p.tangential_l / kappa;
+      }
       pairs.push_back(p);
     }
   }

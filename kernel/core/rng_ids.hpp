@@ -19,6 +19,7 @@ enum class RngPurpose : std::uint16_t {
   relaxation = 8,        // BGK-like relaxation (003): sub = 0, step = time step, index = block 0, 1, ...
   swpm_candidate = 9,    // weighted particles: sub = 0, step = candidate draw, index = block 0..3
   swpm_sync = 10,        // weighted particles: sub = 0, step = update of every particle, index = particle
+  initial_spin = 11,     // rough particles: sub = species, step = 0, index = particle
 };
 
 }  // namespace granmc

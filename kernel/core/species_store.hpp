@@ -89,6 +89,25 @@ class BasicSpeciesStore {
     }
   }
 
+  /// Rough particles (collide/rough_rule.hpp) also spin. The spin of particle k is kept as
+  /// s_k = (sigma_i / 2) omega_k, the velocity of the rotation at the particle's surface, in the stored velocity
+  /// unit (so the velocity scale applies to it as to c), in a second buffer beside the records that exists only
+  /// after enable_spins: smooth particles carry none and their records stay 32 bytes. Disks spin about z only.
+  void enable_spins() { spins_ = AlignedBuffer<SpinRecord>(records_.size()); }
+  [[nodiscard]] bool has_spins() const noexcept { return spins_.size() != 0; }
+  [[nodiscard]] Vec3 spin(std::size_t k) const noexcept {
+    const SpinRecord& r = spins_[k];
+    return {r.s[0], r.s[1], r.s[2]};
+  }
+  void set_spin(std::size_t k, const Vec3& s) noexcept {
+    SpinRecord& r = spins_[k];
+    r.s[0] = rounded(s.x), r.s[1] = rounded(s.y), r.s[2] = rounded(s.z);
+  }
+  /// The index of a particle of this store.
+  [[nodiscard]] std::size_t index(const Particle& p) const noexcept {
+    return static_cast<std::size_t>(p.r_ - records_.data());
+  }
+
   [[nodiscard]] Particle particle(std::size_t k) noexcept {
     Particle p;
     p.r_ = &records_[k];
@@ -220,6 +239,15 @@ class BasicSpeciesStore {
   void for_each_velocity(F&& f) const noexcept {
     for (std::size_t k = 0; k < records_.size(); ++k) f(velocity(k));
   }
+  /// Applies f(Vec3&) to every spin in storage order (none without enable_spins).
+  template <class F>
+  void for_each_spin(F&& f) noexcept {
+    for (std::size_t k = 0; k < spins_.size(); ++k) {
+      Vec3 s = spin(k);
+      f(s);
+      set_spin(k, s);
+    }
+  }
 
   /// Bytes of particle state per particle (the budget of DESIGN.md: at most 32).
   static constexpr std::size_t bytes_per_particle() noexcept { return sizeof(Record); }
@@ -233,6 +261,10 @@ class BasicSpeciesStore {
     };
   };
   static_assert(sizeof(Record) == 4 * sizeof(Real));
+  struct alignas(4 * sizeof(Real)) SpinRecord {
+    Real s[3];
+    Real unused;
+  };
   /// Rounds to the storage precision (to nearest; no rounding for double), past GCC 12.2's fault
   /// (core/rounded_float.hpp).
   static void store(Record& r, const Vec3& v) noexcept {
@@ -248,7 +280,8 @@ class BasicSpeciesStore {
     }
   }
   AlignedBuffer<Record> records_;
-  double clock_origin_ = 0.0;  // last_update(k) = clock_origin_ + aux (0 for double)
+  AlignedBuffer<SpinRecord> spins_;  // rough particles only (enable_spins)
+  double clock_origin_ = 0.0;        // last_update(k) = clock_origin_ + aux (0 for double)
 };
 
 /// The default store: double precision, 32 bytes per particle.

@@ -33,5 +33,8 @@ constexpr Vec3 operator*(double s, Vec3 a) noexcept { return a *= s; }
 constexpr double dot(const Vec3& a, const Vec3& b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
 constexpr double norm2(const Vec3& a) noexcept { return dot(a, a); }
 inline double norm(const Vec3& a) noexcept { return std::sqrt(norm2(a)); }
+constexpr Vec3 cross(const Vec3& a, const Vec3& b) noexcept {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 
 }  // namespace granmc

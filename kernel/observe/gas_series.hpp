@@ -31,6 +31,10 @@ struct SpeciesSeries {
   std::vector<double> speed_counts;     // histogram of v* = |V| / v0 over the stationary samples
                                         // (observe/speed_histogram.hpp), output.histogram shells; for
                                         // weighted particles the weight in each shell in units of 1 / N_i
+  // Rough particles (collide/rough_rule.hpp), empty for smooth ones:
+  std::vector<double> rotational_temperature;  // T_rot,i = I_i <omega^2> / d_r (d_r = 3 spheres, 1 disks)
+  std::vector<double> a02;                     // d_r/(d_r+2) <omega^4> / <omega^2>^2 - 1 (observe/moments.hpp)
+  std::vector<double> a11;                     // <V^2 omega^2> / (<V^2> <omega^2>) - 1
 };
 
 /// What an intruder replica records (method "gillespie", 002).
@@ -119,6 +123,9 @@ void visit_species_fields(S& s, Visit&& visit) {
   visit("a2", s.a2);
   visit("a3", s.a3);
   visit("speed_counts", s.speed_counts);
+  visit("rotational_temperature", s.rotational_temperature);
+  visit("a02", s.a02);
+  visit("a11", s.a11);
 }
 
 template <class S, class Visit>
@@ -179,7 +186,7 @@ void visit_replica_fields(S& s, Visit&& visit) {
 #if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
 // Tripwire: a field added to these structs must be added to the lists above (and to the round trip in
 // tests/test_mpi.cpp); then update the sizes.
-static_assert(sizeof(SpeciesSeries) == 120, "SpeciesSeries changed: add the new field to visit_species_fields");
+static_assert(sizeof(SpeciesSeries) == 192, "SpeciesSeries changed: add the new field to visit_species_fields");
 static_assert(sizeof(ShearSeries) == 72, "ShearSeries changed: add the new field to visit_shear_fields");
 static_assert(sizeof(IntruderSeries) == 168, "IntruderSeries changed: add the new field to visit_intruder_fields");
 static_assert(sizeof(WeightedSeries) == 72, "WeightedSeries changed: add the new field to visit_weighted_fields");

@@ -35,6 +35,34 @@ struct SpeciesMoments {
   }
 };
 
+/// The spin moments of one species of rough particles (core/species_store.hpp: s = (sigma / 2) omega, stored
+/// units), with the velocities about a centre for their correlation.
+struct SpinMoments {
+  std::size_t particles = 0;
+  double sum_s2 = 0.0;     // sum_k |s_k|^2
+  double sum_s4 = 0.0;     // sum_k |s_k|^4
+  double sum_c2_s2 = 0.0;  // sum_k |c_k - centre|^2 |s_k|^2
+
+  [[nodiscard]] double mean_s2() const noexcept { return sum_s2 / static_cast<double>(particles); }
+  /// The spins' kurtosis cumulant a02 = d_r/(d_r + 2) <omega^4> / <omega^2>^2 - 1 with d_r rotational degrees of
+  /// freedom (3 spheres, 1 disks), zero for a Maxwellian.
+  [[nodiscard]] double a02(int rotational_freedom) const noexcept {
+    const double m2 = mean_s2();
+    const double d = rotational_freedom;
+    return d / (d + 2.0) * (sum_s4 / static_cast<double>(particles)) / (m2 * m2) - 1.0;
+  }
+  /// The correlation of translation and rotation a11 = <V^2 omega^2> / (<V^2> <omega^2>) - 1, zero when they
+  /// are independent; `mean_c2` is <|c - centre|^2> of the same particles.
+  [[nodiscard]] double a11(double mean_c2) const noexcept {
+    return sum_c2_s2 / static_cast<double>(particles) / (mean_c2 * mean_s2()) - 1.0;
+  }
+};
+
+/// The spin moments of every particle of a store with spins. (Instantiated for SpeciesStore and
+/// FloatSpeciesStore.)
+template <class Real>
+SpinMoments spin_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre) noexcept;
+
 /// The moments of the particles [first, last) of the store (a part of a system spread over ranks sums
 /// these per chunk, schemes/rank_wave_backend.hpp). (Instantiated for SpeciesStore and FloatSpeciesStore.)
 template <class Real>

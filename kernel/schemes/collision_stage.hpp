@@ -2,7 +2,8 @@
 // The collision stage of one step of the time-stepped ESMC/DSMC scheme (000 sec. 3). For each ordered
 // species pair (i, j) a given number of candidate pairs {k, l} (k of species i, l of species j, l != k
 // when i = j) chosen with equiprobability, each accepted with probability omega / omega_max^(ij), and the
-// post-collision rule of 000 eqs. (14-15) for the accepted ones. When omega exceeds the majorant, the
+// post-collision rule of 000 eqs. (14-15) for the accepted ones (rough particles: collide/rough_rule.hpp, with
+// the spins the store keeps beside the records). When omega exceeds the majorant, the
 // collision is accepted and omega_max^(ij) := omega (000 sec. 3). Two forms of the acceptance, the same
 // law:
 //  - With a collision shift (the Enskog gas under shear, spheres), the paper's: a direction sigma-hat uniform
@@ -42,6 +43,7 @@
 #include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/collide/rough_rule.hpp"
 #include "kernel/core/address_set.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
@@ -126,6 +128,7 @@ class BatchedStage {
   static constexpr bool screened = Kernel::screen_candidates;
   static constexpr bool directions_for_all = !screened || Shift::active;
   static constexpr int dimension = Kernel::dimension;  // 3 spheres, 2 disks (collide/impact_direction.hpp)
+  static constexpr bool rough = rough_kernel<Kernel>;  // the particles spin (collide/rough_rule.hpp)
   // A batch's values in whole SIMD registers.
   static constexpr std::size_t lanes = (batch + SimdDouble::size - 1) / SimdDouble::size * SimdDouble::size;
   using Lanes = std::array<double, lanes>;
@@ -457,18 +460,32 @@ class BatchedStage {
     return !(u * majorant_[q] > omega);
   }
 
-  /// The collision of candidate b of batch d along sigma-hat (000 sec. 3, step 3; eqs. 14-15).
+  /// The collision of candidate b of batch d along sigma-hat (000 sec. 3, step 3; eqs. 14-15; rough particles
+  /// collide/rough_rule.hpp).
   void apply(const Drawn& d, std::uint64_t b, Vec3 vk, Vec3 vl, const Vec3& sigma, double g_sigma) noexcept {
     const std::size_t q = one_pair ? 0 : d.qs[b];
     const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
     if constexpr (in_round) {
+      static_assert(!rough, "rough particles collide in order (schemes/concurrent_rounds.hpp)");
       undo_.emplace_back(d.pk[b], vk);
       undo_.emplace_back(d.pl[b], vl);
     }
-    inelastic_collision(vk, vl, sigma, g_sigma, p);
+    double twice_energy_loss;
+    if constexpr (rough) {  // collide/rough_rule.hpp, with the spins beside the records
+      Store& store_k = *store_k_[q];
+      Store& store_l = *store_l_[q];
+      const std::size_t k = store_k.index(d.pk[b]), l = store_l.index(d.pl[b]);
+      Vec3 sk = store_k.spin(k), sl = store_l.spin(l);
+      twice_energy_loss = rough_collision(vk, vl, sk, sl, sigma, g_sigma, p);
+      store_k.set_spin(k, sk);
+      store_l.set_spin(l, sl);
+    } else {
+      inelastic_collision(vk, vl, sigma, g_sigma, p);
+      twice_energy_loss = 2.0 * p.energy_loss * g_sigma * g_sigma;
+    }
     d.pk[b].set_velocity(vk);
     d.pl[b].set_velocity(vl);
-    Outcome o{d.first + b, q, 2.0 * p.energy_loss * g_sigma * g_sigma, {}};
+    Outcome o{d.first + b, q, twice_energy_loss, {}};
     if constexpr (Shift::active) {  // collide/enskog_shear_shift.hpp
       const double impulse = p.one_plus_alpha * p.reduced_mass * g_sigma;
       o.shift.twice_energy_shear_work = 2.0 * impulse * p.diameter * shift_.rate * sigma.x * sigma.y;

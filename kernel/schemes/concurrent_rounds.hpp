@@ -145,18 +145,22 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
 
 }  // namespace detail
 
-/// collide_step (schemes/collision_stage.hpp) on rounds.threads threads, the same bits.
+/// collide_step (schemes/collision_stage.hpp) on rounds.threads threads, the same bits; on one for rough
+/// particles.
 template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift, class Real = double>
 void collide_step_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs,
                             std::span<double> omega_max, std::span<const std::uint64_t> candidates,
                             const RandomStream& rng, std::span<CollisionTally> tallies, ConcurrentRounds& rounds,
                             const Kernel& kernel = {}, const Shift& shift = {}) {
-  if (pairs.size() == 1)
+  if constexpr (rough_kernel<Kernel>) {  // the rounds keep no spins to undo: rough particles collide in order
+    collide_step<Kernel, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
+  } else if (pairs.size() == 1) {
     detail::collide_in_rounds<Kernel, Shift, true, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel,
                                                           shift, rounds);
-  else
+  } else {
     detail::collide_in_rounds<Kernel, Shift, false, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel,
                                                            shift, rounds);
+  }
 }
 
 }  // namespace granmc

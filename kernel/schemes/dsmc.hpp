@@ -63,6 +63,8 @@ class BasicDsmc {
   using Shift = typename detail::collision_shift<Effects...>::type;
   // Degrees of freedom per particle: T = m <c^2> / d (3 spheres, 2 disks).
   static constexpr double dimension = Kernel::dimension;
+  // Rough particles spin (collide/rough_rule.hpp); the tracked energy is the translational one.
+  static constexpr bool rough = rough_kernel<Kernel>;
 
  public:
   /// Uniform shear flow (effects/lagrangian_shear.hpp) is in the pack: the pressure tensor is observed.
@@ -148,6 +150,14 @@ class BasicDsmc {
         const Vec3 c = store.velocity(k);
         v.insert(v.end(), {c.x, c.y, c.z});
       }
+      if constexpr (rough) {
+        std::vector<double>& w = s.spins.emplace_back();
+        w.reserve(3 * store.size());
+        for (std::size_t k = 0; k < store.size(); ++k) {
+          const Vec3 c = store.spin(k);
+          w.insert(w.end(), {c.x, c.y, c.z});
+        }
+      }
     }
     s.log_u = state_.scale.log_u, s.time = state_.time, s.step = state_.step;
     s.omega_max = omega_max_, s.carried = carried_, s.total = total_, s.pair_totals = pair_totals_;
@@ -167,6 +177,12 @@ class BasicDsmc {
       const std::vector<double>& v = s.velocities[i];
       if (v.size() != 3 * store.size()) throw std::runtime_error("a snapshot of another scene");
       for (std::size_t k = 0; k < store.size(); ++k) store.set_velocity(k, {v[3 * k], v[3 * k + 1], v[3 * k + 2]});
+      if constexpr (rough) {
+        if (s.spins.size() != state_.species.size() || s.spins[i].size() != v.size())
+          throw std::runtime_error("a snapshot of another scene");
+        const std::vector<double>& w = s.spins[i];
+        for (std::size_t k = 0; k < store.size(); ++k) store.set_spin(k, {w[3 * k], w[3 * k + 1], w[3 * k + 2]});
+      }
     }
     state_.scale.log_u = s.log_u, state_.time = s.time, state_.step = s.step;
     omega_max_ = s.omega_max, carried_ = s.carried, total_ = s.total, pair_totals_ = s.pair_totals;
@@ -301,7 +317,10 @@ class BasicDsmc {
     momentum_removed_ += norm(t.momentum) / std::sqrt(t.mass * t.twice_energy);
     const double twice_energy = t.twice_energy - norm2(t.momentum) / t.mass;  // after removing v_cm
     const double s = std::sqrt(dimension * total_particles_ / twice_energy);
-    for (BasicSpeciesStore<Real>& store : state_.species) store.for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
+    for (BasicSpeciesStore<Real>& store : state_.species) {
+      store.for_each_velocity([&](Vec3& c) { c = s * (c - v_cm); });
+      store.for_each_spin([&](Vec3& w) { w = s * w; });  // rough particles: spins in the same unit
+    }
     state_.scale.log_u -= std::log(s);
     twice_energy_ = reference_twice_energy_ = dimension * total_particles_;
     ++rescales_;

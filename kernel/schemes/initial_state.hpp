@@ -18,7 +18,8 @@ void maxwellian_velocities(BasicSpeciesStore<Real>& store, const RandomStream& r
                            std::uint64_t first, double width, int dimension) noexcept;
 
 /// Maxwellian velocities at the scene's initial temperature for every species (000 eq. 13), then each
-/// species' mean velocity subtracted so the total momentum vanishes (000 sec. 3). The velocity scale is
+/// species' mean velocity subtracted so the total momentum vanishes (000 sec. 3); rough particles also get
+/// Maxwellian spins at the same temperature (core/species_store.hpp). The velocity scale is
 /// u = sqrt(T(0)), so stored velocities have m <c^2> / d = 1 on average.
 /// Real is the storage precision (GasState or FloatGasState): the draws are the same, rounded when stored.
 template <class Real = double>

@@ -22,6 +22,7 @@ namespace granmc {
 /// step. The per-step scratch (candidates, step tallies) is rebuilt by the next step.
 struct DsmcSnapshot {
   std::vector<std::vector<double>> velocities;  // per species: x, y, z of each particle, stored units
+  std::vector<std::vector<double>> spins;       // rough particles, per species: s of each particle, as velocities
   double log_u = 0.0;                           // the velocity scale (core/velocity_scale.hpp)
   double time = 0.0;
   std::uint64_t step = 0;  // the random streams' step counter
@@ -73,6 +74,7 @@ struct ReplicaInFlight {
 template <class S, class Visit>
 void visit_snapshot_fields(S& s, Visit&& visit) {
   visit("velocities", s.velocities);
+  visit("spins", s.spins);
   visit("log_u", s.log_u);
   visit("time", s.time);
   visit("step", s.step);
@@ -112,7 +114,7 @@ void visit_swpm_snapshot_fields(S& s, Visit&& visit) {
 
 #if defined(__GLIBCXX__) && defined(__x86_64__) && !defined(_GLIBCXX_DEBUG)
 // Tripwires: a field added to a snapshot must be added to its list above; then update the size.
-static_assert(sizeof(DsmcSnapshot) == 304, "DsmcSnapshot changed: add the new field to visit_snapshot_fields");
+static_assert(sizeof(DsmcSnapshot) == 328, "DsmcSnapshot changed: add the new field to visit_snapshot_fields");
 static_assert(sizeof(EventSnapshot) == 80, "EventSnapshot changed: add the new field to visit_event_snapshot_fields");
 static_assert(sizeof(SwpmSnapshot) == 344, "SwpmSnapshot changed: add the new field to visit_swpm_snapshot_fields");
 static_assert(sizeof(WeightedParticles) == 168, "WeightedParticles changed: add the new field to its visit_fields");

@@ -24,7 +24,8 @@ constexpr const char* supported_list =
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
     "every gas scene; hard disks (run.dimension = 2) with method = \"dsmc\", one or two species (one with a "
     "packing_fraction: Henderson's chi), thermostat \"none\", \"gaussian\" or \"white-noise\", no shear or "
-    "relaxation";
+    "relaxation; rough spheres or disks (collision.tangential_restitution > -1) with method = \"dsmc\", one species, "
+    "thermostat \"none\" or \"white-noise\" (on translation), no shear";
 
 [[noreturn]] void refuse(const std::string& what) {
   throw PlanRefusal("this version of granmc cannot run " + what + " yet; " + supported_list);
@@ -86,8 +87,9 @@ KernelChoice stepped_kernel(const Scene& scene) {
     case CollisionKernel::hard_sphere:
       break;
   }
-  if (scene.run.dimension == 2) return HardDisk{};
-  return HardSphere{};
+  const bool spins = rough(scene.collision);  // collide/rough_rule.hpp
+  if (scene.run.dimension == 2) return spins ? KernelChoice{RoughHardDisk{}} : KernelChoice{HardDisk{}};
+  return spins ? KernelChoice{RoughHardSphere{}} : KernelChoice{HardSphere{}};
 }
 
 ShearChoice shear_effects(const Scene& scene) {
@@ -160,8 +162,15 @@ SteppedPlan stepped_plan(const Scene& scene, Spread spread) {
 }  // namespace
 
 RunPlan make_plan(const Scene& scene, Spread spread) {
-  if (!scene.intruder && rough(scene.collision))
-    refuse("rough particles (collision.tangential_restitution > -1; their theory is in `granmc theory`)");
+  if (!scene.intruder && rough(scene.collision)) {
+    if (scene.run.method != Method::dsmc)
+      refuse("rough particles (collision.tangential_restitution > -1) other than with method = \"dsmc\"");
+    if (scene.collision.kernel != CollisionKernel::hard_sphere || scene.collision.rate > 0.0)
+      refuse(
+          "rough particles (collision.tangential_restitution > -1) other than hard spheres or disks with "
+          "collision.rate = 0");
+    if (scene.species.size() != 1) refuse("rough particles (collision.tangential_restitution > -1) of two species");
+  }
   if (scene.intruder) {
     SchemeChoice scheme = intruder_plan(scene);
     if (spread == Spread::particles) refuse_spread("an [intruder] scene");

@@ -56,7 +56,8 @@ struct EffectList {
 /// The collision kernels of the event scheme and the weighted particles, one per physical law
 /// (collide/collision_kernel.hpp), and of the time-stepped scheme, which also has hard disks.
 using EventKernelChoice = std::variant<HardSphere, MaxwellPseudomolecules, VariableHardSpheres>;
-using KernelChoice = std::variant<HardSphere, HardDisk, MaxwellPseudomolecules, VariableHardSpheres>;
+using KernelChoice =
+    std::variant<HardSphere, HardDisk, RoughHardSphere, RoughHardDisk, MaxwellPseudomolecules, VariableHardSpheres>;
 /// Uniform shear flow: none, the inertial force (Boltzmann), or with the Enskog shift of the contact velocity.
 using ShearChoice =
     std::variant<EffectList<>, EffectList<LagrangianShear>, EffectList<LagrangianShear, EnskogShearShift>>;
@@ -80,7 +81,11 @@ inline constexpr const char* relaxation_refusal =
 /// products for which it and spread_refusal are nullptr.
 template <class Kernel, class Shear, class Thermostat>
 constexpr const char* stepped_refusal() noexcept {
-  if constexpr (!Shear::empty && Kernel::dimension == 2)
+  if constexpr (rough_kernel<Kernel> && !Shear::empty)
+    return "a [shear] rate with rough particles (collision.tangential_restitution > -1)";
+  else if constexpr (rough_kernel<Kernel> && Thermostat::template has<GaussianThermostat>)
+    return "the Gaussian thermostat with rough particles (collision.tangential_restitution > -1)";
+  else if constexpr (!Shear::empty && Kernel::dimension == 2)
     return "a [shear] rate with hard disks (run.dimension = 2)";
   else if constexpr (!Shear::empty && !std::is_same_v<Kernel, HardSphere>)
     return "a [shear] rate with kernel = \"maxwell\" or \"vhs\"";
@@ -99,6 +104,8 @@ constexpr const char* spread_refusal() noexcept {
     return nullptr;
   else if constexpr (Kernel::dimension == 2)
     return "hard disks (run.dimension = 2)";
+  else if constexpr (rough_kernel<Kernel>)
+    return "rough particles (collision.tangential_restitution > -1)";
   else if constexpr (!Shear::empty)
     return "a [shear] rate";
   else if constexpr (Thermostat::template has<BgkRelaxation>)

@@ -1,0 +1,124 @@
+// Rough particles in the time-stepped scheme (collide/rough_rule.hpp) against what is exact and what is
+// published:
+//  - perfectly rough elastic particles (alpha = beta = 1) conserve translational plus rotational energy over a
+//    run, and the translational bookkeeping closes (energy_residual);
+//  - rough hard disks (kappa = 1/2) under white noise on translation: theta = T_rot / T_tr against the DSMC of
+//    Megias and Santos, Front. Phys. 10 (2022) 971671, data files `Steady states/theta_st_DSMC_{alpha}_{beta}.txt`
+//    of github.com/amegiasf/MpembaSplitting, first row (noise on translation only). The splitting of the white
+//    noise from the collisions makes theta move linearly with dt (docs/validation.md, "Rough particles"), so the
+//    comparison is at dt -> 0 by Richardson extrapolation, per replica, from runs at dt and dt / 2.
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "kernel/analysis/replica_statistics.hpp"
+#include "kernel/observe/gas_series.hpp"
+#include "kernel/setup/run_scene.hpp"
+#include "tests/statistical_check.hpp"
+#include "tests/test_scenes.hpp"
+
+using namespace granmc;
+using granmc::testing::scene_from_toml;
+using granmc::testing::within_ci;
+
+namespace {
+
+/// `heated`: white noise on translation (beta = 1), else no thermostat.
+Scene rough_disks(double alpha, double beta, double dt, bool heated, int particles, int replicas, double t_end) {
+  constexpr std::string_view text = R"(
+    [run]
+    seed = 12
+    replicas = ${replicas}
+    t_end = ${t_end}
+    dt = ${dt}
+    samples = 80
+    dimension = 2
+
+    [[species]]
+    name = "disks"
+    particles = ${particles}
+
+    [collision]
+    restitution = ${alpha}
+    tangential_restitution = ${beta}
+  )";
+  constexpr std::string_view white_noise = R"(
+    [thermostat]
+    kind = "white-noise"
+    beta = 1.0
+  )";
+  return scene_from_toml(std::string(text) + std::string(heated ? white_noise : ""), {{"replicas", replicas},
+                                                                                      {"t_end", t_end},
+                                                                                      {"dt", dt},
+                                                                                      {"particles", particles},
+                                                                                      {"alpha", alpha},
+                                                                                      {"beta", beta}});
+}
+
+/// Per replica, the time average of T_rot / T over the stationary samples.
+std::vector<double> stationary_theta(const RunResult& r) {
+  std::vector<double> theta;
+  const std::size_t first = first_stationary_sample(r.times.size());
+  for (const ReplicaSeries& s : r.replicas) {
+    double sum = 0.0;
+    for (std::size_t k = first; k < r.times.size(); ++k)
+      sum += s.species[0].rotational_temperature[k] / s.species[0].temperature[k];
+    theta.push_back(sum / static_cast<double>(r.times.size() - first));
+  }
+  return theta;
+}
+
+}  // namespace
+
+TEST(RoughParticles, PerfectlyRoughElasticParticlesConserveTheirEnergy) {
+  // No thermostat, alpha = beta = 1: (d/2) T + (d_r/2) T_rot keeps its value at t = 0 to rounding (the
+  // translational energy moves to rotation and back); spheres and disks.
+  for (int d : {3, 2}) {
+    Scene s = rough_disks(1.0, 1.0, 0.01, false, 2000, 2, 5.0);
+    s.run.dimension = d;
+    s.collision.reduced_inertia = d == 3 ? 0.4 : 0.5;
+    const RunResult r = run_scene(s, {});
+    const double d_r = d == 3 ? 3.0 : 1.0;
+    for (const ReplicaSeries& rep : r.replicas) {
+      ASSERT_GT(rep.collisions.back(), 10000.0);  // several collisions per particle
+      const auto energy = [&](std::size_t k) {
+        return d * rep.species[0].temperature[k] + d_r * rep.species[0].rotational_temperature[k];
+      };
+      for (std::size_t k = 1; k < r.times.size(); ++k)
+        EXPECT_NEAR(energy(k) / energy(0), 1.0, 1e-12) << "d = " << d << ", t = " << r.times[k];
+      EXPECT_LT(*rep.energy_residual, energy_balance_tolerance);
+    }
+  }
+}
+
+namespace {
+
+/// theta at dt -> 0 (2 theta(dt/2) - theta(dt) per replica) of white-noise-driven rough disks against the
+/// published value and its error (one standard error, taken lambda_p times as the reference's own interval).
+void expect_published_theta(double alpha, double beta, double published, double published_error, double ci_bound) {
+  const double dt = 0.005;
+  const RunResult coarse = run_scene(rough_disks(alpha, beta, dt, true, 10000, 16, 16.0), {});
+  const RunResult fine = run_scene(rough_disks(alpha, beta, dt / 2.0, true, 10000, 16, 16.0), {});
+  const std::vector<double> at_dt = stationary_theta(coarse), at_half = stationary_theta(fine);
+  std::vector<double> extrapolated;
+  for (std::size_t r = 0; r < at_dt.size(); ++r) extrapolated.push_back(2.0 * at_half[r] - at_dt[r]);
+  const MeanCI theta = replica_mean(extrapolated);
+  std::printf("alpha = %g, beta = %g: theta(dt) = %.5f, theta(dt/2) = %.5f, theta(0) = %.5f +- %.5f; published %.5f\n",
+              alpha, beta, replica_mean(at_dt).mean, replica_mean(at_half).mean, theta.mean, theta.ci, published);
+  EXPECT_TRUE(within_ci("theta", theta, published, ci_bound, confidence_lambda_p * published_error));
+}
+
+}  // namespace
+
+// Bounds: the CIs measured today (0.00218 and 0.00056) times 1.5.
+TEST(RoughParticles, WhiteNoiseThetaOfRoughDisksIsThePublishedOne) {
+  expect_published_theta(0.7, 0.0, 0.2441882371, 4.743e-05, 0.0033);
+}
+
+TEST(RoughParticles, WhiteNoiseThetaOfNearlySmoothDisksIsThePublishedOne) {
+  expect_published_theta(0.9, -0.7, 0.0543255042, 3.320e-05, 0.00084);
+}
