@@ -44,7 +44,7 @@ const std::vector<KnownTable>& known_tables() {
       {"[[species]]", {"name", "mass", "diameter", "density", "particles"}},
       {"[collision]",
        {"kernel", "lambda", "rate", "restitution", "packing_fraction", "tangential_restitution", "reduced_inertia"}},
-      {"[thermostat]", {"kind", "zeta", "beta"}},
+      {"[thermostat]", {"kind", "zeta", "beta", "rotational_share"}},
       {"[shear]", {"rate"}},
       {"[relaxation]", {"enabled", "a2"}},
       {"[initial]", {"temperature", "zero_momentum"}},
@@ -448,7 +448,7 @@ class Reader {
   void read_one_species(const toml::node& el, std::size_t i, Scene& scene) const;
   void check_particle_ratio(const Scene& scene) const;
   void read_collision(const Section& s, Scene& scene) const;
-  void read_thermostat(const Section& s, ThermostatConfig& th) const;
+  void read_thermostat(const Section& s, ThermostatConfig& th, bool rough) const;
   void read_intruder(const Section& s, IntruderConfig& in) const;
   void read_output(const Section& s, HistogramConfig& h) const;
   void read_weights(const Section& s, Scene& scene) const;
@@ -726,7 +726,7 @@ void Reader::read_collision(const Section& s, Scene& scene) const {
   }
 }
 
-void Reader::read_thermostat(const Section& s, ThermostatConfig& th) const {
+void Reader::read_thermostat(const Section& s, ThermostatConfig& th, bool rough) const {
   check_keys(s);
   th.kind = choice<ThermostatKind>(s, "kind",
                                    {{"none", ThermostatKind::none},
@@ -765,6 +765,14 @@ void Reader::read_thermostat(const Section& s, ThermostatConfig& th) const {
   if (th.kind == ThermostatKind::white_noise && !(th.beta > 0)) {
     fail(s.key("beta"), std::string(s.has("beta") ? "0 is not > 0" : "missing") +
                             "; kind = \"white-noise\" needs a diffusion coefficient beta > 0");
+  }
+  // The splitting thermostat of Megias and Santos, Front. Phys. 10 (2022) 971671 (effects/white_noise.hpp).
+  if (const auto share = number(s, "rotational_share", "a number in [0, 1]")) {
+    if (!(*share >= 0.0 && *share <= 1.0)) fail(s.key("rotational_share"), fmt(*share) + " is outside [0, 1]");
+    if (th.kind != ThermostatKind::white_noise || !rough)
+      fail(s.key("rotational_share"),
+           "applies only to kind = \"white-noise\" with rough particles (collision.tangential_restitution > -1)");
+    th.rotational_share = *share;
   }
 }
 
@@ -837,7 +845,7 @@ void Reader::read(const toml::table& root, Scene& scene) const {
   read_run(run, scene.run);
   read_species(root, scene);
   read_collision(collision, scene);
-  read_thermostat(thermostat, scene.thermostat);
+  read_thermostat(thermostat, scene.thermostat, granmc::rough(scene.collision));
 
   check_keys(shear);
   if (const auto a = number(shear, "rate", "a finite number")) scene.shear_rate = finite(shear.key("rate"), *a);

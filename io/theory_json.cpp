@@ -250,9 +250,13 @@ void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohman
                       ", Maxwellian approximation: T_rot / T_tr and the cooling rate (Huthmann and Zippelius 1997; "
                       "docs/derivations/rough-hcs.md)");
   } else if (scene.thermostat.kind == ThermostatKind::white_noise) {
-    r["theta_white_noise"] = theory::rough_white_noise_theta(beta, kappa);
-    applies.push_back("white noise on translation, monodisperse " + particles +
-                      ", Maxwellian approximation: the steady T_rot / T_tr (docs/derivations/rough-hcs.md)");
+    const double share = scene.thermostat.rotational_share;
+    r["rotational_share"] = share;
+    r["theta_white_noise"] = theory::rough_split_noise_theta(alpha, beta, kappa, share, d);
+    applies.push_back(
+        std::string(share > 0.0 ? "white noise split between translation and rotation" : "white noise on translation") +
+        ", monodisperse " + particles +
+        ", Maxwellian approximation: the steady T_rot / T_tr (docs/derivations/rough-hcs.md)");
   }
   j["rough"] = r;
 }

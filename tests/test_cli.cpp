@@ -157,6 +157,7 @@ TEST_F(Cli, RoughParticlesHaveTheirTheoryAndRun) {
   EXPECT_TRUE(species.contains("rotational_temperature"));
   const Outcome explain = granmc("run rough.toml --explain");
   EXPECT_NE(explain.stdout_text.find("rough-hard-sphere"), std::string::npos) << explain.stdout_text;
+  EXPECT_NE(explain.stdout_text.find("64 bytes per particle"), std::string::npos) << explain.stdout_text;  // + spins
   // A smooth scene has none of the rough records.
   write("smooth.toml", good_scene);
   ASSERT_EQ(granmc("run smooth.toml --summary smooth.json --quiet").status, 0);

@@ -52,3 +52,22 @@ TEST(RoughTheory, CoolingStateHasEqualRatesAndMatchesTheDerivationsTable) {
   EXPECT_NEAR(rough_white_noise_theta(0.0, 0.4), 0.2222222222, 1e-10);
   EXPECT_NEAR(rough_white_noise_theta(0.5, 0.5), 0.5, 1e-15);
 }
+
+TEST(RoughTheory, SplitNoiseThetaHasItsLimitsAndTheMaxwellianTable) {
+  // epsilon = 0: white noise on translation; epsilon = 1: on rotation only, zeta_tr = 0, which is linear in theta:
+  // theta = kappa [(1 - alpha^2) + 2 (d - 1) b (1 - b)] / (2 (d - 1) b^2).
+  for (int d : {3, 2}) {
+    const double kappa = d == 3 ? 0.4 : 0.5, b = rough_tangential_factor(0.3, kappa), c = 2.0 * (d - 1);
+    EXPECT_EQ(rough_split_noise_theta(0.8, 0.3, kappa, 0.0, d), rough_white_noise_theta(0.3, kappa));
+    EXPECT_NEAR(rough_split_noise_theta(0.8, 0.3, kappa, 1.0, d),
+                kappa * ((1.0 - 0.64) + c * b * (1.0 - b)) / (c * b * b), 1e-12);
+  }
+  // Disks, kappa = 1/2: the Maxwellian column beside the published DSMC of Megias and Santos (2022) in
+  // docs/validation.md (alpha, beta, epsilon, theta), computed independently from the balance of powers.
+  struct Row {
+    double alpha, beta, share, theta;
+  };
+  for (const Row& r : {Row{0.9, 0.0, 0.5, 1.0420}, Row{0.7, -0.7, 0.5, 3.2368}, Row{0.9, -0.7, 0.1, 0.2301},
+                       Row{0.7, 0.0, 0.8, 3.6700}})
+    EXPECT_NEAR(rough_split_noise_theta(r.alpha, r.beta, 0.5, r.share, 2), r.theta, 5e-5) << r.alpha << r.beta;
+}

@@ -672,6 +672,15 @@ TEST(SceneFile, RoughParticles) {
                   "outside [-1, 1]");
   expect_rejected(kGas + "[collision]\nreduced_inertia = 0\n", "collision.reduced_inertia", "outside (0, 1]");
   expect_rejected(kGas + "[collision]\nreduced_inertia = \"big\"\n", "collision.reduced_inertia", "(0, 1]");
+  // The splitting thermostat: a share of white noise on the spins of rough particles only.
+  const std::string noise = "[thermostat]\nkind = \"white-noise\"\nbeta = 1.0\n";
+  const Scene split =
+      parse_scene(kGas + "[collision]\ntangential_restitution = 0.0\n" + noise + "rotational_share = 0.25\n", kPath);
+  EXPECT_EQ(split.thermostat.rotational_share, 0.25);
+  EXPECT_EQ(s.thermostat.rotational_share, 0.0);
+  expect_rejected(kGas + noise + "rotational_share = 0.25\n", "thermostat.rotational_share", "rough particles");
+  expect_rejected(kGas + "[collision]\ntangential_restitution = 0.0\n" + noise + "rotational_share = 1.5\n",
+                  "thermostat.rotational_share", "outside [0, 1]");
 }
 
 TEST(SceneFile, GasDimension) {

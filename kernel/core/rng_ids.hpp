@@ -20,6 +20,8 @@ enum class RngPurpose : std::uint16_t {
   swpm_candidate = 9,    // weighted particles: sub = 0, step = candidate draw, index = block 0..3
   swpm_sync = 10,        // weighted particles: sub = 0, step = update of every particle, index = particle
   initial_spin = 11,     // rough particles: sub = species, step = 0, index = particle
+  white_noise_spin_kick =
+      12,  // rough particles' share of white noise: sub = species, step = time step, index = particle
 };
 
 }  // namespace granmc

@@ -76,6 +76,8 @@ struct ThermostatConfig {
   bool zeta_is_cooling_rate = true;  // gaussian: compensate the instantaneous cooling rate
   double zeta = 0.0;                 // gaussian with a fixed rate (1/time)
   double beta = 0.0;                 // white noise: dv = sqrt(2 beta) dW, >= 0
+  double rotational_share = 0.0;     // white noise on rough particles: the fraction of the injected power that
+                                     // kicks the spins, in [0, 1] (effects/white_noise.hpp)
 };
 
 struct IntruderConfig {

@@ -249,8 +249,11 @@ class BasicSpeciesStore {
     }
   }
 
-  /// Bytes of particle state per particle (the budget of DESIGN.md: at most 32).
-  static constexpr std::size_t bytes_per_particle() noexcept { return sizeof(Record); }
+  /// Bytes of particle state per particle (the budget of DESIGN.md: at most 32), and the spins' record for rough
+  /// particles (`spins`), which they pay on top.
+  static constexpr std::size_t bytes_per_particle(bool spins = false) noexcept {
+    return sizeof(Record) + (spins ? sizeof(SpinRecord) : 0);
+  }
 
  private:
   struct alignas(4 * sizeof(Real)) Record {

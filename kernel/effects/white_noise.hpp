@@ -5,6 +5,13 @@
 // sec. 4 describes it; the event scheme, schemes/event_scheme.hpp, has no splitting error).
 // Random words: purpose white_noise_kick, sub = species, step = time step, index = particle; the normals
 // of 16 particles at a time in SIMD (core/batch_variates.hpp).
+//
+// Rough particles (collide/rough_rule.hpp) can have a share epsilon of the injected power go into rotation, the
+// splitting thermostat of Megias and Santos, Front. Phys. 10 (2022) 971671: the velocities get
+// sqrt(2 beta (1 - epsilon) dt) xi, a power (d/2) m 2 beta (1 - epsilon) per particle, and the spins
+// s = (sigma/2) omega get sqrt(2 beta epsilon (d / d_r) dt / kappa) xi per rotational component (d_r = 3 for spheres,
+// the z component for disks), whose power kappa m (d_r / 2) (2 beta epsilon d / (d_r kappa)) = d m beta epsilon
+// makes up the rest. Their words: purpose white_noise_spin_kick, as for the velocities.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -23,9 +30,11 @@ struct WhiteNoise {
   static constexpr const char* name = "white-noise";
   static constexpr bool acts_on_particles = true;
 
-  double beta = 0.0;           // velocity diffusion coefficient (velocity^2 / time)
-  std::vector<double> masses;  // m_i of the species, in scene order
-  int dimension = 3;           // 2: disks, kicked in the (x, y) plane only
+  double beta = 0.0;              // velocity diffusion coefficient (velocity^2 / time)
+  std::vector<double> masses;     // m_i of the species, in scene order
+  int dimension = 3;              // 2: disks, kicked in the (x, y) plane only
+  double rotational_share = 0.0;  // epsilon: the share of the power that kicks the spins (rough particles)
+  double reduced_inertia = 0.4;   // kappa of the rough particles
 
   [[nodiscard]] std::string explanation() const {
     return "white noise after each collision stage (splitting, O(N) per step)";
@@ -48,8 +57,8 @@ struct WhiteNoise {
   template <class Store, class State>
   void apply_range(Store& store, std::size_t from, std::size_t to, std::uint64_t offset, std::uint16_t i,
                    const State& state, const StepContext& step, CompensatedSum& change) const noexcept {
-    const double width = std::sqrt(2.0 * beta * step.dt) / state.scale.u();  // stored units
-    const double width_z = dimension == 3 ? width : 0.0;                     // disks: no kick along z
+    const double width = std::sqrt(2.0 * beta * (1.0 - rotational_share) * step.dt) / state.scale.u();  // stored
+    const double width_z = dimension == 3 ? width : 0.0;  // disks: no kick along z
     const double mass = masses[i];
     for_each_particle_normal<batch>(*step.rng, RngPurpose::white_noise_kick, i, state.step, offset + from, to - from,
                                     [&](std::size_t k, const Vec3& xi) {
@@ -57,6 +66,23 @@ struct WhiteNoise {
                                       const Vec3 kicked = c + Vec3{width * xi.x, width * xi.y, width_z * xi.z};
                                       store.set_velocity(from + k, kicked);
                                       change.add(mass * (norm2(kicked) - norm2(c)));
+                                    });
+    if (rotational_share > 0.0) kick_spins(store, from, to, offset, i, state, step);
+  }
+
+  /// The spins' share of the noise (rough particles): it leaves the translational energy as it is.
+  template <class Store, class State>
+  void kick_spins(Store& store, std::size_t from, std::size_t to, std::uint64_t offset, std::uint16_t i,
+                  const State& state, const StepContext& step) const noexcept {
+    const double rotations = dimension == 3 ? 3.0 : 1.0;
+    const double width =
+        std::sqrt(2.0 * beta * rotational_share * (dimension / rotations) * step.dt / reduced_inertia) /
+        state.scale.u();
+    const bool disks = dimension == 2;  // spinning about z
+    for_each_particle_normal<batch>(*step.rng, RngPurpose::white_noise_spin_kick, i, state.step, offset + from,
+                                    to - from, [&](std::size_t k, const Vec3& xi) {
+                                      const Vec3 kick = disks ? Vec3{0.0, 0.0, xi.x} : xi;
+                                      store.set_spin(from + k, store.spin(from + k) + width * kick);
                                     });
   }
 };

@@ -8,6 +8,12 @@
 
 namespace granmc {
 
+/// The kurtosis cumulant n/(n + 2) <x^4> / <x^2>^2 - 1 of an isotropic vector with n components, zero for a
+/// Gaussian one.
+inline double kurtosis_cumulant(double n, double mean4, double mean2) noexcept {
+  return n / (n + 2.0) * mean4 / (mean2 * mean2) - 1.0;
+}
+
 struct SpeciesMoments {
   std::size_t particles = 0;
   double sum_c2 = 0.0;  // sum_k |c_k - centre|^2
@@ -20,9 +26,7 @@ struct SpeciesMoments {
   /// Kurtosis cumulant a2 = d/(d+2) <c^4> / <c^2>^2 - 1 in d = `dimension` (3/5 for spheres, 1/2 for disks;
   /// zero for a Maxwellian; c_i = 2 a2, 000 Fig. 1).
   [[nodiscard]] double a2(int dimension) const noexcept {
-    const double m2 = mean_c2();
-    const double d = dimension;
-    return d / (d + 2.0) * (sum_c4 / static_cast<double>(particles)) / (m2 * m2) - 1.0;
+    return kurtosis_cumulant(dimension, sum_c4 / static_cast<double>(particles), mean_c2());
   }
   /// Third Sonine coefficient a3 = 1 + 3 a2 - d^2/((d+2)(d+4)) <c^6> / <c^2>^3 (9/35 for spheres, 1/6 for
   /// disks; zero for a Maxwellian; from <c^6> = (d/2)(d/2+1)(d/2+2)(1 + 3 a2 - a3) in units of sqrt(2T/m),
@@ -47,9 +51,7 @@ struct SpinMoments {
   /// The spins' kurtosis cumulant a02 = d_r/(d_r + 2) <omega^4> / <omega^2>^2 - 1 with d_r rotational degrees of
   /// freedom (3 spheres, 1 disks), zero for a Maxwellian.
   [[nodiscard]] double a02(int rotational_freedom) const noexcept {
-    const double m2 = mean_s2();
-    const double d = rotational_freedom;
-    return d / (d + 2.0) * (sum_s4 / static_cast<double>(particles)) / (m2 * m2) - 1.0;
+    return kurtosis_cumulant(rotational_freedom, sum_s4 / static_cast<double>(particles), mean_s2());
   }
   /// The correlation of translation and rotation a11 = <V^2 omega^2> / (<V^2> <omega^2>) - 1, zero when they
   /// are independent; `mean_c2` is <|c - centre|^2> of the same particles.

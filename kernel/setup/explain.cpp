@@ -268,8 +268,9 @@ std::string name_of(const IntruderDsmcPlan& plan, const Scene&) {
 }  // namespace
 
 std::size_t stored_bytes_per_particle(const Scene& scene) noexcept {
-  return scene.run.storage == Storage::single_precision ? FloatSpeciesStore::bytes_per_particle()
-                                                        : SpeciesStore::bytes_per_particle();
+  const bool spins = !scene.intruder && rough(scene.collision);  // rough particles (core/species_store.hpp)
+  return scene.run.storage == Storage::single_precision ? FloatSpeciesStore::bytes_per_particle(spins)
+                                                        : SpeciesStore::bytes_per_particle(spins);
 }
 
 std::string instantiation_name(const RunPlan& plan, const Scene& scene) {

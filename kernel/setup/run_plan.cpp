@@ -25,7 +25,7 @@ constexpr const char* supported_list =
     "every gas scene; hard disks (run.dimension = 2) with method = \"dsmc\", one or two species (one with a "
     "packing_fraction: Henderson's chi), thermostat \"none\", \"gaussian\" or \"white-noise\", no shear or "
     "relaxation; rough spheres or disks (collision.tangential_restitution > -1) with method = \"dsmc\", one species, "
-    "thermostat \"none\" or \"white-noise\" (on translation), no shear";
+    "thermostat \"none\" or \"white-noise\" (on translation, or a share on the spins), no shear";
 
 [[noreturn]] void refuse(const std::string& what) {
   throw PlanRefusal("this version of granmc cannot run " + what + " yet; " + supported_list);
@@ -113,7 +113,8 @@ ThermostatChoice thermostat_effects(const Scene& scene) {
           {thermostat, BgkRelaxation{SonineMaxwellian(a2), scene.species[0].mass}}};
     }
     case ThermostatKind::white_noise:
-      return EffectList<WhiteNoise>{{WhiteNoise{th.beta, species_masses(scene), scene.run.dimension}}};
+      return EffectList<WhiteNoise>{{WhiteNoise{th.beta, species_masses(scene), scene.run.dimension,
+                                                th.rotational_share, scene.collision.reduced_inertia}}};
     case ThermostatKind::none:
       break;
   }

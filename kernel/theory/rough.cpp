@@ -31,4 +31,21 @@ double rough_white_noise_theta(double beta, double kappa) noexcept {
   return b * kappa / (kappa - b);
 }
 
+double rough_split_noise_theta(double alpha, double beta, double kappa, double rotational_share,
+                               int dimension) noexcept {
+  if (rotational_share == 0.0) return rough_white_noise_theta(beta, kappa);
+  const double d = dimension, rotations = d * (d - 1.0) / 2.0;
+  const auto imbalance = [&](double theta) {  // grows with theta (rough.hpp)
+    const RoughCoolingRates z = rough_cooling_rates(alpha, beta, kappa, theta, dimension);
+    return (1.0 - rotational_share) * rotations * theta * z.rotation - rotational_share * d * z.translation;
+  };
+  double low = 0.0, high = 1.0;
+  while (imbalance(high) < 0.0) high *= 2.0;
+  for (int k = 0; k < 200 && high - low > 1e-15 * high; ++k) {
+    const double mid = 0.5 * (low + high);
+    (imbalance(mid) < 0.0 ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
 }  // namespace granmc::theory

@@ -29,4 +29,11 @@ double rough_hcs_theta(double alpha, double beta, double kappa, int dimension) n
 /// whatever alpha and d.
 double rough_white_noise_theta(double beta, double kappa) noexcept;
 
+/// theta of the steady state heated by white noise of which a share `rotational_share` epsilon of the power kicks
+/// the rotation (effects/white_noise.hpp; Megias and Santos, Front. Phys. 10 (2022) 971671): the power balances
+/// (1 - epsilon) d_r theta zeta_rot = epsilon d zeta_tr, whose left side minus right side grows with theta, so
+/// it has one root, found by bisection. epsilon = 0 gives rough_white_noise_theta.
+double rough_split_noise_theta(double alpha, double beta, double kappa, double rotational_share,
+                               int dimension) noexcept;
+
 }  // namespace granmc::theory
