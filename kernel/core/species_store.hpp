@@ -103,6 +103,8 @@ class BasicSpeciesStore {
     SpinRecord& r = spins_[k];
     r.s[0] = rounded(s.x), r.s[1] = rounded(s.y), r.s[2] = rounded(s.z);
   }
+  /// Hint that particle k's spin will be read and written soon.
+  void prefetch_spin(std::size_t k) const noexcept { __builtin_prefetch(&spins_[k], 1, 3); }
   /// The index of a particle of this store.
   [[nodiscard]] std::size_t index(const Particle& p) const noexcept {
     return static_cast<std::size_t>(p.r_ - records_.data());

@@ -598,6 +598,14 @@ class BatchedStage {
       }
       full_test = shared_ | (passes & (m >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << m) - 1));
     }
+    if constexpr (rough) {  // the spins of the candidates that may collide, while their directions are computed
+      for (std::uint64_t bits = full_test; bits != 0; bits &= bits - 1) {
+        const auto b = static_cast<std::uint64_t>(std::countr_zero(bits));
+        const std::size_t q = one_pair ? 0 : d.qs[b];
+        store_k_[q]->prefetch_spin(store_k_[q]->index(d.pk[b]));
+        store_l_[q]->prefetch_spin(store_l_[q]->index(d.pl[b]));
+      }
+    }
     return full_test;
   }
 
