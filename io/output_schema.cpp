@@ -584,7 +584,9 @@ std::vector<OutputRecord> declare() {
          [](const ViscosityReport& v) { return v.eta; });
   window("eta_kinetic_star", "", "kinetic part eta^k* over the window",
          [](const ViscosityReport& v) { return v.eta_kinetic; });
-  window("eta_over_eta0", "", "one species: eta / eta0, eta0 = (5/16 sigma^2) sqrt(m T / pi), over the window",
+  window("eta_over_eta0", "",
+         "one species: eta / eta0, eta0 = (5/16 sigma^2) sqrt(m T / pi) (disks (1 / (2 sigma)) sqrt(m T / pi)), over "
+         "the window",
          [](const ViscosityReport& v) { return v.eta_over_eta0; });
   window("eta_kinetic_over_eta0", "", "one species: eta^k / eta0 over the window",
          [](const ViscosityReport& v) { return v.eta_kinetic_over_eta0; });
@@ -606,7 +608,7 @@ std::vector<OutputRecord> declare() {
           return viscosity(o)->*member;
         });
   };
-  shear_series("reduced_shear_rate", "a* = a / nu, nu = sqrt(pi) n sigma_12^2 v0",
+  shear_series("reduced_shear_rate", "a* = a / nu, nu = sqrt(pi) n sigma_12^2 v0 (disks (sqrt(pi) / 2) n sigma_12 v0)",
                &ViscosityReport::reduced_shear_rate);
   shear_series("pressure_xy", "P_xy / (n T), kinetic + collisional", &ViscosityReport::pressure_xy);
   shear_series("pressure_kinetic_xy", "P^k_xy / (n T) (000 eq. 17)", &ViscosityReport::pressure_kinetic_xy);

@@ -850,18 +850,24 @@ void Reader::read(const toml::table& root, Scene& scene) const {
   check_keys(shear);
   if (const auto a = number(shear, "rate", "a finite number")) scene.shear_rate = finite(shear.key("rate"), *a);
   // Under shear the Enskog gas feels sigma and n beyond chi (the contact shift sigma_ij a and the transfer
-  // across sigma_ij, 000 eq. 18), so phi must be the packing fraction of the species as given.
+  // across sigma_ij, 000 eq. 18), so phi must be the packing fraction of the species as given: sum_i pi n_i
+  // sigma_i^3 / 6, or sum_i pi n_i sigma_i^2 / 4 for disks.
   if (const double phi = scene.collision.packing_fraction; scene.shear_rate != 0.0 && phi > 0.0) {
+    const bool disks = scene.run.dimension == 2;
     double from_species = 0.0;
     for (const SpeciesConfig& sp : scene.species)
-      from_species += std::numbers::pi / 6.0 * sp.density * std::pow(sp.diameter, 3);
+      from_species += disks ? std::numbers::pi / 4.0 * sp.density * sp.diameter * sp.diameter
+                            : std::numbers::pi / 6.0 * sp.density * std::pow(sp.diameter, 3);
     if (!(std::fabs(from_species - phi) <= 1e-6 * phi))
-      fail("shear.rate", "with collision.packing_fraction = " + std::to_string(phi) +
-                             " needs species densities and diameters with sum_i pi n_i sigma_i^3 / 6 = phi (now " +
-                             std::to_string(from_species) +
-                             "): under shear the Enskog contact shift and collisional "
-                             "transfer depend on n and sigma themselves (000 eqs. 2, 18); for one species of "
-                             "diameter 1 set density = 6 phi / pi");
+      fail("shear.rate",
+           "with collision.packing_fraction = " + std::to_string(phi) +
+               (disks ? " needs species densities and diameters with sum_i pi n_i sigma_i^2 / 4 = phi (now "
+                      : " needs species densities and diameters with sum_i pi n_i sigma_i^3 / 6 = phi (now ") +
+               std::to_string(from_species) +
+               "): under shear the Enskog contact shift and collisional "
+               "transfer depend on n and sigma themselves (000 eqs. 2, 18); for one species of "
+               "diameter 1 set density = " +
+               (disks ? "4 phi / pi" : "6 phi / pi"));
   }
 
   check_keys(relaxation);

@@ -161,11 +161,31 @@ void add_enskog_chi(const Scene& scene, const std::vector<double>& /*times*/, nl
   }
 }
 
-/// The first-Sonine Navier-Stokes shear viscosity of a uniform shear flow of hard spheres.
+/// The first-Sonine Navier-Stokes shear viscosity of a dilute gas of hard disks under uniform shear flow: the
+/// theory is the dilute one of d = 2 (theory/viscosity.hpp, dilute_shear_viscosity), one species.
+void add_disk_viscosity(const Scene& scene, nlohmann::json& j, nlohmann::json& applies) {
+  if (scene.species.size() != 1 || scene.collision.packing_fraction > 0.0 || scene.relaxation) return;
+  const double alpha = scene.collision.restitution[0][0];
+  auto block = [&](theory::ViscosityReference r) {
+    const theory::ShearViscosity s = theory::dilute_shear_viscosity(alpha, 2, r);
+    return nlohmann::json{{"eta_over_eta0", s.total}, {"eta_star", theory::reduced_viscosity_one_species(s.total, 2)}};
+  };
+  j["viscosity"] = {{"reference", "Gaussian-thermostat steady state (000)"},
+                    {"first_sonine", block(theory::ViscosityReference::gaussian_thermostat)},
+                    {"first_sonine_cooling_state", block(theory::ViscosityReference::cooling)},
+                    {"first_sonine_gaussian_thermostat", block(theory::ViscosityReference::gaussian_thermostat)}};
+  applies.push_back(
+      "uniform shear flow, dilute hard disks: first-Sonine Navier-Stokes shear viscosity in d = 2 "
+      "(docs/derivations/viscosity.md, \"Disks\")");
+}
+
+/// The first-Sonine Navier-Stokes shear viscosity of a uniform shear flow of hard spheres (or dilute disks).
 void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
                    nlohmann::json& applies) {
-  if (scene.shear_rate != 0.0 && scene.collision.kernel == CollisionKernel::hard_sphere && !scene.species.empty() &&
-      scene.run.dimension == 3) {
+  const bool hard_cores = scene.shear_rate != 0.0 && scene.collision.kernel == CollisionKernel::hard_sphere &&
+                          !scene.species.empty() && !rough(scene.collision);
+  if (hard_cores && scene.run.dimension == 2) add_disk_viscosity(scene, j, applies);
+  if (hard_cores && scene.run.dimension == 3) {
     // The reference state whose Navier-Stokes viscosity the run measures: the HSS of 000 (Gaussian thermostat
     // compensating the cooling), or the HCS with 003's relaxation term (theory/viscosity.hpp).
     const bool hcs = scene.relaxation;
@@ -208,13 +228,12 @@ void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlo
 /// hard spheres, Grad's solution (theory/steady_shear.hpp).
 void add_steady_shear(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
                       nlohmann::json& applies) {
-  if (scene.run.method != Method::dsmc || scene.run.dimension != 3 || scene.shear_rate == 0.0 ||
-      scene.species.size() != 1 || scene.collision.kernel != CollisionKernel::hard_sphere ||
-      scene.collision.packing_fraction > 0.0 || scene.thermostat.kind != ThermostatKind::none || scene.relaxation ||
-      scene.collision.restitution[0][0] >= 1.0)
+  if (scene.run.method != Method::dsmc || scene.shear_rate == 0.0 || scene.species.size() != 1 ||
+      scene.collision.kernel != CollisionKernel::hard_sphere || scene.collision.packing_fraction > 0.0 ||
+      scene.thermostat.kind != ThermostatKind::none || scene.relaxation || scene.collision.restitution[0][0] >= 1.0)
     return;
   const SpeciesConfig& sp = scene.species[0];
-  const theory::SteadyShearFlow s = theory::steady_shear_grad(scene.collision.restitution[0][0]);
+  const theory::SteadyShearFlow s = theory::steady_shear_grad(scene.collision.restitution[0][0], scene.run.dimension);
   j["steady_shear"] = {{"approximation", "Grad 13-moment (Santos, Garzo and Dufty, PRE 69, 061303, 2004)"},
                        {"reduced_shear_rate", s.shear_rate_star},
                        {"shear_rate_over_nu0", s.shear_rate_nu0},
@@ -225,7 +244,10 @@ void add_steady_shear(const Scene& scene, const std::vector<double>& /*times*/, 
                        {"pressure_xy_over_p", s.pressure_xy},
                        {"temperature", theory::steady_shear_temperature(s, std::fabs(scene.shear_rate), sp.density,
                                                                         sp.diameter, sp.mass)}};
-  applies.push_back("steady uniform shear flow without thermostat, dilute hard spheres: Grad's solution (000 sec. 5)");
+  applies.push_back(scene.run.dimension == 2
+                        ? "steady uniform shear flow without thermostat, dilute hard disks: Grad's solution in d = 2"
+                        : "steady uniform shear flow without thermostat, dilute hard spheres: Grad's solution (000 "
+                          "sec. 5)");
 }
 
 /// Rough particles, one species of hard spheres or disks: theta = T_r / T and the cooling rates of the cooling

@@ -157,16 +157,15 @@ TEST(Numerics, TurnSincosIsAccurateToTwoUlp) {
 
 TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
   // core/batch_variates.hpp against core/sampling.hpp on 2^20 uniforms from Philox, including the extreme
-  // words 0 and 2^32 - 1: directions and Box-Muller angles use the same operations, so they agree bit for
-  // bit; the logarithm is xsimd's, so exponentials and normals may differ from libm's in the last bit
-  // (bound: 2 ulp of the value), and xsimd's pow, exp(p log u), loses more (bound: 64 ulp; measured about
-  // 20, printed).
+  // words 0 and 2^32 - 1: directions (sphere and circle) and Box-Muller angles use the same operations, so they agree
+  // bit for bit; the logarithm is xsimd's, so exponentials and normals may differ from libm's in the last bit (bound: 2
+  // ulp of the value), and xsimd's pow, exp(p log u), loses more (bound: 64 ulp; measured about 20, printed).
   constexpr std::size_t lanes = 64;
   const RandomStream rng(13, 0);
   double worst_log = 0.0, worst_normal = 0.0, worst_power = 0.0;
   auto ulps = [](double simd, double scalar) { return std::abs(simd - scalar) / (std::abs(scalar) * 0x1p-52); };
   for (std::uint64_t chunk = 0; chunk < (1u << 14); ++chunk) {
-    std::array<double, lanes> u1, u2, e, z1, z2, x, y, z, p;
+    std::array<double, lanes> u1, u2, e, z1, z2, x, y, z, p, cx, cy, cz, lx, ly, lz;
     for (std::size_t k = 0; k < lanes; ++k) {
       const RandomBlock r = rng.block(RngPurpose::initial_velocity, 0, chunk, k);
       u1[k] = uniform_open(chunk == 0 && k == 0 ? 0u : r[0]);
@@ -180,6 +179,8 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
                           std::span(z2));
     unit_vectors(std::span<const double, lanes>(u1), std::span<const double, lanes>(u2), std::span(x), std::span(y),
                  std::span(z));
+    unit_circle_vectors(std::span<const double, lanes>(u1), std::span(cx), std::span(cy), std::span(cz));
+    lambert_circle_vectors(std::span<const double, lanes>(u1), std::span(lx), std::span(ly), std::span(lz));
     for (std::size_t k = 0; k < lanes; ++k) {
       worst_log = std::max(worst_log, ulps(e[k], -std::log(u1[k])));
       worst_power = std::max(worst_power, ulps(p[k], std::pow(u1[k], 2.5)));
@@ -191,6 +192,13 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
       ASSERT_EQ(x[k], v.x);
       ASSERT_EQ(y[k], v.y);
       ASSERT_EQ(z[k], v.z);
+      const Vec3 c = unit_circle_vector(u1[k]), l = lambert_circle_vector(u1[k]);  // disks
+      ASSERT_EQ(cx[k], c.x);
+      ASSERT_EQ(cy[k], c.y);
+      ASSERT_EQ(cz[k], c.z);
+      ASSERT_EQ(lx[k], l.x);
+      ASSERT_EQ(ly[k], l.y);
+      ASSERT_EQ(lz[k], l.z);
     }
   }
   EXPECT_LE(worst_log, 2.0);

@@ -564,6 +564,13 @@ TEST(SceneFile, ShearAndOutputValues) {
   expect_rejected(kGas + "[shear]\nrate = nan\n", "shear.rate", "nan is not finite");
   expect_rejected(kGas + "[collision]\npacking_fraction = 0.3\n[shear]\nrate = 0.5\n", "shear.rate",
                   "sum_i pi n_i sigma_i^3 / 6 = phi");
+  // Disks: the packing fraction of the plane, pi n sigma^2 / 4, so density 1 at phi = pi / 4 passes.
+  const std::string disks = "[run]\nt_end = 1.0\ndt = 0.01\ndimension = 2\n" + kSpecies;
+  expect_rejected(disks + "[collision]\npacking_fraction = 0.3\n[shear]\nrate = 0.5\n", "shear.rate",
+                  "sum_i pi n_i sigma_i^2 / 4 = phi (now 0.785398)");
+  EXPECT_EQ(parse_scene(disks + "[collision]\npacking_fraction = 0.7853981633974483\n[shear]\nrate = 0.5\n", kPath)
+                .shear_rate,
+            0.5);
   expect_rejected(kGas + "[output]\nhistogram = { shells = 0 }\n", "output.histogram.shells", "0 is outside [1, ");
   expect_rejected(kGas + "[output]\nhistogram = { radius = 0 }\n", "output.histogram.radius", "0 is not > 0");
   expect_rejected(kGas + "[output]\nhistogram = { speed = \"v0\" }\n", "output.histogram.speed",

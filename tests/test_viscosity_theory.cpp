@@ -174,46 +174,75 @@ TEST(ViscosityTheory, ReducedViscosityOfFigures10To12) {
 // Steady uniform shear flow without a thermostat, Grad's solution (kernel/theory/steady_shear.hpp).
 
 TEST(SteadyShearTheory, ElasticLimitIsEquilibrium) {
-  const SteadyShearFlow s = steady_shear_grad(1.0);
-  EXPECT_EQ(s.shear_rate_nu0, 0.0);
-  EXPECT_EQ(s.eta_over_eta0, 1.0);
-  EXPECT_EQ(s.pressure_xx, 1.0);
-  EXPECT_EQ(s.pressure_yy, 1.0);
+  for (int d : {3, 2}) {
+    const SteadyShearFlow s = steady_shear_grad(1.0, d);
+    EXPECT_EQ(s.shear_rate_nu0, 0.0);
+    EXPECT_EQ(s.eta_over_eta0, 1.0);
+    EXPECT_EQ(s.pressure_xx, 1.0);
+    EXPECT_EQ(s.pressure_yy, 1.0);
+  }
 }
 
 TEST(SteadyShearTheory, IsTheEndOfTheGradMomentEquations) {
   // The moment equations the closed form solves, integrated in time from equilibrium (RK4) at a fixed shear
-  // rate a, with nu0 = (16/5) n sigma^2 sqrt(pi T / m) following T = tr P / 3 (n = sigma = m = 1):
+  // rate a, in d = 3 and d = 2, with nu0 = n T / eta0 following T = tr P / d (n = sigma = m = 1;
+  // eta0 = ((d + 2) / 8) Gamma(d / 2) pi^(-(d - 1) / 2) sqrt(T), theory/viscosity.hpp):
   //   dP_xx/dt = -2 a P_xy - nu0 [beta (P_xx - p) + zeta p],  dP_yy/dt = -nu0 [beta (P_yy - p) + zeta p],
-  //   dP_xy/dt = -a P_yy - nu0 beta P_xy,  P_zz = P_yy.
-  for (double alpha : {0.5, 0.7, 0.9}) {
-    const double beta = (1.0 + alpha) * (3.0 - alpha) / 4.0, zeta = 5.0 / 12.0 * (1.0 - alpha * alpha);
-    const double a = 2.0;
-    auto rate = [&](const std::array<double, 3>& P) {
-      const double p = (P[0] + 2.0 * P[1]) / 3.0, nu0 = 3.2 * std::sqrt(std::numbers::pi * p);
-      return std::array<double, 3>{-2.0 * a * P[2] - nu0 * (beta * (P[0] - p) + zeta * p),
-                                   -nu0 * (beta * (P[1] - p) + zeta * p), -a * P[1] - nu0 * beta * P[2]};
-    };
-    std::array<double, 3> P{1.0, 1.0, 0.0};
-    const double dt = 1e-3;
-    for (int step = 0; step < 200000; ++step) {
-      auto add = [&](const std::array<double, 3>& k, double f) {
-        return std::array<double, 3>{P[0] + f * k[0], P[1] + f * k[1], P[2] + f * k[2]};
+  //   dP_xy/dt = -a P_yy - nu0 beta P_xy,  P_zz = P_yy (spheres),
+  // beta = (3 / (4 d)) (1 - alpha + 2 d / 3)(1 + alpha), zeta = ((d + 2) / (4 d)) (1 - alpha^2).
+  for (int d : {3, 2})
+    for (double alpha : {0.5, 0.7, 0.9}) {
+      const double beta = 3.0 / (4.0 * d) * (1.0 - alpha + 2.0 * d / 3.0) * (1.0 + alpha);
+      const double zeta = (d + 2.0) / (4.0 * d) * (1.0 - alpha * alpha);
+      const double nu0_root_t = 8.0 * std::pow(std::numbers::pi, 0.5 * (d - 1)) / ((d + 2.0) * std::tgamma(0.5 * d));
+      const double a = 2.0;
+      auto pressure = [&](const std::array<double, 3>& P) { return (P[0] + (d - 1.0) * P[1]) / d; };
+      auto rate = [&](const std::array<double, 3>& P) {
+        const double p = pressure(P), nu0 = nu0_root_t * std::sqrt(p);
+        return std::array<double, 3>{-2.0 * a * P[2] - nu0 * (beta * (P[0] - p) + zeta * p),
+                                     -nu0 * (beta * (P[1] - p) + zeta * p), -a * P[1] - nu0 * beta * P[2]};
       };
-      const auto k1 = rate(P), k2 = rate(add(k1, dt / 2)), k3 = rate(add(k2, dt / 2)), k4 = rate(add(k3, dt));
-      for (int i = 0; i < 3; ++i) P[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+      std::array<double, 3> P{1.0, 1.0, 0.0};
+      const double dt = 1e-3;
+      for (int step = 0; step < 200000; ++step) {
+        auto add = [&](const std::array<double, 3>& k, double f) {
+          return std::array<double, 3>{P[0] + f * k[0], P[1] + f * k[1], P[2] + f * k[2]};
+        };
+        const auto k1 = rate(P), k2 = rate(add(k1, dt / 2)), k3 = rate(add(k2, dt / 2)), k4 = rate(add(k3, dt));
+        for (int i = 0; i < 3; ++i) P[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+      }
+      const double p = pressure(P), nu0 = nu0_root_t * std::sqrt(p);
+      const SteadyShearFlow s = steady_shear_grad(alpha, d);
+      EXPECT_NEAR(a / nu0, s.shear_rate_nu0, 1e-9) << d << " " << alpha;
+      EXPECT_NEAR(P[0] / p, s.pressure_xx, 1e-9) << d << " " << alpha;
+      EXPECT_NEAR(P[1] / p, s.pressure_yy, 1e-9) << d << " " << alpha;
+      EXPECT_NEAR(P[2] / p, s.pressure_xy, 1e-9) << d << " " << alpha;
+      EXPECT_NEAR(-P[2] / a * nu0 / p, s.eta_over_eta0, 1e-9) << d << " " << alpha;
+      EXPECT_NEAR(p, steady_shear_temperature(s, a, 1.0, 1.0, 1.0), 1e-9) << d << " " << alpha;
+      // granmc's a* and eta* (000's nu = sqrt(pi) n sigma^2 sqrt(2 T / m); disks (sqrt(pi) / 2) n sigma
+      // sqrt(2 T / m), observe/pressure_tensor.hpp).
+      const double nu = std::pow(std::numbers::pi, 0.5 * (d - 1)) / (2.0 * std::tgamma(0.5 * d)) * std::sqrt(2.0 * p);
+      EXPECT_NEAR(a / nu, s.shear_rate_star, 1e-9) << d << " " << alpha;
+      EXPECT_NEAR(-P[2] / a * nu / p, s.eta_star, 1e-9) << d << " " << alpha;
     }
-    const double p = (P[0] + 2.0 * P[1]) / 3.0, nu0 = 3.2 * std::sqrt(std::numbers::pi * p);
-    const SteadyShearFlow s = steady_shear_grad(alpha);
-    EXPECT_NEAR(a / nu0, s.shear_rate_nu0, 1e-9) << alpha;
-    EXPECT_NEAR(P[0] / p, s.pressure_xx, 1e-9) << alpha;
-    EXPECT_NEAR(P[1] / p, s.pressure_yy, 1e-9) << alpha;
-    EXPECT_NEAR(P[2] / p, s.pressure_xy, 1e-9) << alpha;
-    EXPECT_NEAR(-P[2] / a * nu0 / p, s.eta_over_eta0, 1e-9) << alpha;
-    EXPECT_NEAR(p, steady_shear_temperature(s, a, 1.0, 1.0, 1.0), 1e-9) << alpha;
-    // granmc's a* and eta* (000's nu = sqrt(pi) n sigma^2 sqrt(2 T / m)).
-    const double nu = std::sqrt(std::numbers::pi) * std::sqrt(2.0 * p);
-    EXPECT_NEAR(a / nu, s.shear_rate_star, 1e-9) << alpha;
-    EXPECT_NEAR(-P[2] / a * nu / p, s.eta_star, 1e-9) << alpha;
-  }
+}
+
+TEST(ViscosityTheory, DisksHaveTheFirstSonineCoefficientsOfDimensionTwo) {
+  // dilute_shear_viscosity's d = 2 branch against the d-general forms (theory/viscosity.hpp) written here
+  // with d explicit, and its d = 3 branch against shear_viscosity at phi = 0. The d-general collision
+  // integrals are checked by Monte Carlo in docs/derivations/viscosity.md, "Disks".
+  for (double alpha : {0.3, 0.6, 0.9, 1.0})
+    for (ViscosityReference r : {kCooling, kThermostat}) {
+      const double d = 2.0, c0 = 2.0 * hcs_a2(alpha, 2);
+      const double nu_eta = 3.0 / (4.0 * d) * (1.0 - alpha + 2.0 * d / 3.0) * (1.0 + alpha) * (1.0 - c0 / 64.0);
+      const double zeta = (d + 2.0) / (4.0 * d) * (1.0 - alpha * alpha) * (1.0 + 3.0 * c0 / 32.0);
+      const ShearViscosity v = dilute_shear_viscosity(alpha, 2, r);
+      EXPECT_NEAR(v.nu_eta, nu_eta, 1e-15) << alpha;
+      EXPECT_NEAR(v.zeta, zeta, 1e-15) << alpha;
+      EXPECT_NEAR(v.total, 1.0 / (nu_eta - (r == kCooling ? 0.5 : 1.0) * zeta), 1e-14) << alpha;
+      EXPECT_EQ(v.kinetic, v.total);
+      EXPECT_EQ(dilute_shear_viscosity(alpha, 3, r).total, shear_viscosity(alpha, 0.0, 1.0, r).total);
+    }
+  EXPECT_EQ(dilute_shear_viscosity(1.0, 2, kCooling).total, 1.0);
+  EXPECT_NEAR(reduced_viscosity_one_species(1.0, 2), std::sqrt(2.0) / 4.0, 1e-16);
 }

@@ -61,7 +61,8 @@ ViscosityReport viscosity_report(const Scene& scene, const RunResult& result) {
   out.eta = window_mean(eta, first, samples);
   out.eta_kinetic = window_mean(eta_k, first, samples);
   if (scene.species.size() == 1) {
-    const double to_eta0 = 16.0 / (5.0 * std::sqrt(2.0));  // eta / eta0 = eta* 16 / (5 sqrt 2) (theory/viscosity.hpp)
+    // eta / eta0 = eta* 16 / ((d + 2) sqrt 2) (theory/viscosity.hpp, reduced_viscosity_one_species)
+    const double to_eta0 = 16.0 / ((scene.run.dimension + 2) * std::sqrt(2.0));
     out.eta_over_eta0 = MeanCI{to_eta0 * out.eta.mean, to_eta0 * out.eta.ci};
     out.eta_kinetic_over_eta0 = MeanCI{to_eta0 * out.eta_kinetic.mean, to_eta0 * out.eta_kinetic.ci};
   }

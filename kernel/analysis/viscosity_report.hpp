@@ -19,12 +19,15 @@ struct ViscosityReport {
   MeanCISeries eta_kinetic_star;     // -P^k_xy / (n T a*)
   /// Over the window (the last half of the samples, first_stationary_sample): per replica the time
   /// average, then the replica mean.
-  double window_start = 0.0;                    // first sample time of the window
-  MeanCI eta;                                   // eta* over the window
-  MeanCI eta_kinetic;                           // eta^k* over the window
-  std::optional<MeanCI> eta_over_eta0;          // one species: eta / eta0, eta0 = (5/16 sigma^2) sqrt(m T / pi)
-  std::optional<MeanCI> eta_kinetic_over_eta0;  // (003), so eta / eta0 = eta* 16 / (5 sqrt 2)
-  double reduced_shear_rate_min = 0.0;          // a* range over the window (replica means)
+  double window_start = 0.0;  // first sample time of the window
+  MeanCI eta;                 // eta* over the window
+  MeanCI eta_kinetic;         // eta^k* over the window
+  /// One species: eta / eta0 and eta^k / eta0, eta0 = (5/16 sigma^2) sqrt(m T / pi) (003), so eta / eta0 =
+  /// eta* 16 / (5 sqrt 2); disks: eta0 = (1 / (2 sigma)) sqrt(m T / pi) and eta / eta0 = eta* 2 sqrt 2
+  /// (theory/viscosity.hpp).
+  std::optional<MeanCI> eta_over_eta0;
+  std::optional<MeanCI> eta_kinetic_over_eta0;
+  double reduced_shear_rate_min = 0.0;  // a* range over the window (replica means)
   double reduced_shear_rate_max = 0.0;
   MeanCI eta_scene_units;          // eta = eta* n T / nu at the final mixture temperature (replica mean):
   MeanCI eta_kinetic_scene_units;  // -P_xy / a in scene units, long-time value (SCENES.md "eta")

@@ -145,6 +145,24 @@ inline void unit_vectors(std::span<const double, N> u1, std::span<const double, 
   }
 }
 
+/// unit_circle_vector lane by lane (the same bits, any N).
+template <std::size_t N>
+inline void unit_circle_vectors(std::span<const double, N> u, std::span<double, N> x, std::span<double, N> y,
+                                std::span<double, N> z) noexcept {
+  constexpr std::size_t whole = N - N % SimdDouble::size;
+  for (std::size_t k = 0; k < whole; k += SimdDouble::size) {
+    SimdDouble c, s;
+    detail::turn_sincos_lanes(SimdDouble::load_unaligned(&u[k]), c, s);
+    c.store_unaligned(&x[k]);
+    s.store_unaligned(&y[k]);
+    SimdDouble(0.0).store_unaligned(&z[k]);
+  }
+  for (std::size_t k = whole; k < N; ++k) {
+    const Vec3 e = unit_circle_vector(u[k]);
+    x[k] = e.x, y[k] = e.y, z[k] = e.z;
+  }
+}
+
 /// lambert_circle_vector lane by lane (the same bits, any N).
 template <std::size_t N>
 inline void lambert_circle_vectors(std::span<const double, N> u, std::span<double, N> x, std::span<double, N> y,

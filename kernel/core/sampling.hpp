@@ -39,6 +39,12 @@ inline Vec3 unit_vector(double u1, double u2) noexcept {
   return {sin_theta * phi.cos, sin_theta * phi.sin, cos_theta};
 }
 
+/// Direction (cos phi, sin phi, 0) uniform on the unit circle from one uniform: phi = 2 pi u.
+inline Vec3 unit_circle_vector(double u) noexcept {
+  const CosSin phi = turn_sincos(u);
+  return {phi.cos, phi.sin, 0.0};
+}
+
 /// Direction (cos theta, sin theta, 0) on the half circle x > 0 with density cos(theta) / 2 in theta
 /// (Lambert's law in the plane) from one uniform: sin(theta) = 2 u - 1 is uniform.
 inline Vec3 lambert_circle_vector(double u) noexcept {

@@ -48,6 +48,8 @@ double thermal_speed(const Scene& scene, double temperature) {
 
 double effective_collision_frequency(const Scene& scene, double temperature) {
   const double sigma_12 = 0.5 * (scene.species.front().diameter + scene.species.back().diameter);
+  if (scene.run.dimension == 2)  // sigma_12^(d-1) and half the prefactor (pressure_tensor.hpp)
+    return 0.5 * std::sqrt(std::numbers::pi) * total_density(scene) * sigma_12 * thermal_speed(scene, temperature);
   return std::sqrt(std::numbers::pi) * total_density(scene) * sigma_12 * sigma_12 * thermal_speed(scene, temperature);
 }
 

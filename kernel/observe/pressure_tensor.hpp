@@ -2,8 +2,8 @@
 // The pressure tensor of a sheared gas and the reduced shear rate, in the reduced units of 000 Figs. 10-12.
 //
 // Kinetic part (000 eq. 17): P^k = sum_i (m_i n_i / N_i) sum_k V_k V_k, so with n_i / N_i = n / N and the
-// mixture temperature T = sum_i m_i sum_k V_k^2 / 3N,
-//     P^k / (n T) = 3 sum_i m_i sum_k V_k V_k / sum_i m_i sum_k V_k^2   (trace 3),
+// mixture temperature T = sum_i m_i sum_k V_k^2 / dN,
+//     P^k / (n T) = d sum_i m_i sum_k V_k V_k / sum_i m_i sum_k V_k^2   (trace d; disks d = 2, n per area),
 // with V the peculiar velocity (about the mixture's flow velocity). The collisional transfer part is
 // tallied by the collision stage (collide/enskog_shear_shift.hpp, schemes/dsmc.hpp).
 #include "kernel/core/scene.hpp"
@@ -21,7 +21,9 @@ SymTensor reduced_kinetic_pressure(const Scene& scene, const BasicGasState<Real>
 double thermal_speed(const Scene& scene, double temperature);
 
 /// The effective collision frequency nu = sqrt(pi) n sigma_12^2 v_0 of 000 Fig. 10 (sigma_12 the
-/// cross-diameter; for one species sigma), at mixture temperature T.
+/// cross-diameter; for one species sigma), at mixture temperature T. Disks (run.dimension = 2): nu =
+/// (sqrt(pi) / 2) n sigma_12 v_0, the same share 1 / (2 sqrt 2) of the Maxwellian collision frequency of one
+/// species as in d = 3 (docs/physics.md, "Uniform shear flow of disks").
 double effective_collision_frequency(const Scene& scene, double temperature);
 
 }  // namespace granmc

@@ -6,8 +6,9 @@
 // the spins the store keeps beside the records). When omega exceeds the majorant, the
 // collision is accepted and omega_max^(ij) := omega (000 sec. 3). Two forms of the acceptance, the same
 // law:
-//  - With a collision shift (the Enskog gas under shear, spheres), the paper's: a direction sigma-hat uniform
-//    on the sphere first, omega = omega_kl(sigma-hat) = prefactor rate(g.sigma, |g|^2), zero when g.sigma <= 0.
+//  - With a collision shift (the Enskog gas under shear), the paper's: a direction sigma-hat uniform on the
+//    sphere (the circle for disks) first, omega = omega_kl(sigma-hat) = prefactor rate(g.sigma, |g|^2), zero when
+//    g.sigma <= 0.
 //  - Otherwise the direction after the acceptance: omega = prefactor mean_rate(|g|^2), the mean of
 //    omega_kl over sigma-hat (collide/hard_sphere.hpp), then sigma-hat from its conditional law given the
 //    collision, density proportional to Theta(g.sigma) (g.sigma) (collide/impact_direction.hpp). The
@@ -437,12 +438,13 @@ class BatchedStage {
       d.dir2[b] = uniform_open(w[1][draw(b)]);
       d.accept[b] = uniform_open(w[2][draw(b)]);
     }
-    // sigma-hat of the paper's form, uniform on the sphere, or the variates n of the impact direction (the same
-    // bits as their scalar forms, in SIMD)
-    if constexpr (directions_for_all && Shift::active) {
-      static_assert(dimension == 3, "a collision shift (shear) with disks: setup/run_plan.hpp refuses it");
+    // sigma-hat of the paper's form, uniform on the sphere (the circle for disks), or the variates n of the impact
+    // direction (the same bits as their scalar forms, in SIMD)
+    if constexpr (directions_for_all && Shift::active && dimension == 3) {
       unit_vectors(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2), std::span(d.sx),
                    std::span(d.sy), std::span(d.sz));
+    } else if constexpr (directions_for_all && Shift::active) {  // disks: uniform on the circle
+      unit_circle_vectors(std::span<const double, lanes>(d.dir1), std::span(d.sx), std::span(d.sy), std::span(d.sz));
     } else if constexpr (directions_for_all)
       impact_variates<dimension>(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2),
                                  std::span(d.sx), std::span(d.sy), std::span(d.sz));

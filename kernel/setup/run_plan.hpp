@@ -85,9 +85,7 @@ constexpr const char* stepped_refusal() noexcept {
     return "a [shear] rate with rough particles (collision.tangential_restitution > -1)";
   else if constexpr (rough_kernel<Kernel> && Thermostat::template has<GaussianThermostat>)
     return "the Gaussian thermostat with rough particles (collision.tangential_restitution > -1)";
-  else if constexpr (!Shear::empty && Kernel::dimension == 2)
-    return "a [shear] rate with hard disks (run.dimension = 2)";
-  else if constexpr (!Shear::empty && !std::is_same_v<Kernel, HardSphere>)
+  else if constexpr (!Shear::empty && !std::is_same_v<Kernel, HardCore<Kernel::dimension>>)
     return "a [shear] rate with kernel = \"maxwell\" or \"vhs\"";
   else if constexpr (!Shear::empty && Thermostat::template has<WhiteNoise>)
     return "a [shear] rate with the white-noise thermostat";

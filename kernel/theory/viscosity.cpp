@@ -32,12 +32,22 @@ ShearViscosity shear_viscosity(double alpha, double phi, double chi, ViscosityRe
   return v;
 }
 
+ShearViscosity dilute_shear_viscosity(double alpha, int dimension, ViscosityReference reference) noexcept {
+  if (dimension != 2) return shear_viscosity(alpha, 0.0, 1.0, reference);
+  const double c0 = 2.0 * hcs_a2(alpha, 2);
+  ShearViscosity v;
+  v.nu_eta = (1.0 + alpha) * (7.0 - 3.0 * alpha) / 8.0 * (1.0 - c0 / 64.0);
+  v.zeta = 0.5 * (1.0 - alpha * alpha) * (1.0 + 3.0 * c0 / 32.0);
+  v.kinetic = v.total = 1.0 / (reference == ViscosityReference::cooling ? v.nu_eta - 0.5 * v.zeta : v.nu_eta - v.zeta);
+  return v;
+}
+
 ShearViscosity shear_viscosity(double alpha, double phi, ViscosityReference reference) {
   return shear_viscosity(alpha, phi, enskog_chi(phi, {1.0}, {1.0}, 0, 0), reference);
 }
 
-double reduced_viscosity_one_species(double eta_over_eta0) noexcept {
-  return 5.0 * std::numbers::sqrt2 / 16.0 * eta_over_eta0;  // sqrt(pi) sigma^2 sqrt(2T/m) eta0 / T
+double reduced_viscosity_one_species(double eta_over_eta0, int dimension) noexcept {
+  return (dimension + 2.0) * std::numbers::sqrt2 / 16.0 * eta_over_eta0;  // nu eta0 / (n T) = nu / nu0
 }
 
 double reduced_viscosity(double eta, double temperature, double sigma_12, double v0) noexcept {

@@ -42,9 +42,19 @@ ShearViscosity shear_viscosity(double alpha, double phi, double chi, ViscosityRe
 /// The same with chi of Carnahan-Starling (003; 000 eq. 3 for one species, granmc::enskog_chi).
 ShearViscosity shear_viscosity(double alpha, double phi, ViscosityReference reference);
 
+/// Dilute (phi = 0) first-Sonine eta / eta0 of spheres (dimension 3: shear_viscosity at phi = 0, chi = 1) or
+/// disks (2). In d dimensions eta0 = ((d + 2) / 8) Gamma(d / 2) pi^(-(d - 1) / 2) sigma^(1 - d) sqrt(m T)
+/// (1 / (2 sigma) sqrt(m T / pi) for disks) and, with c0 = 2 hcs_a2(alpha, d) (Brey, Dufty, Kim and Santos,
+/// PRE 58, 4638 (1998); docs/derivations/viscosity.md, "Disks"),
+///   nu_eta* = (3 / (4 d)) (1 - alpha + 2 d / 3)(1 + alpha)(1 - c0 / 64),
+///   zeta* = ((d + 2) / (4 d)) (1 - alpha^2)(1 + 3 c0 / 32).
+ShearViscosity dilute_shear_viscosity(double alpha, int dimension, ViscosityReference reference) noexcept;
+
 /// 000 Figs. 10-12: eta* = nu eta / (n T), nu = sqrt(pi) n sigma_12^2 v0; for one species sigma_12 = sigma,
-/// v0 = sqrt(2 T / m), so eta* = (5 sqrt(2) / 16) eta / eta0.
-double reduced_viscosity_one_species(double eta_over_eta0) noexcept;
+/// v0 = sqrt(2 T / m), so eta* = (5 sqrt(2) / 16) eta / eta0. Disks: nu = (sqrt(pi) / 2) n sigma v0
+/// (observe/pressure_tensor.hpp) and eta0 of d = 2, so eta* = (4 sqrt(2) / 16) eta / eta0; in d dimensions
+/// nu0 / nu = 16 / ((d + 2) sqrt 2).
+double reduced_viscosity_one_species(double eta_over_eta0, int dimension = 3) noexcept;
 
 /// Mixture normalisation of 000 Figs. 10-12: eta* = sqrt(pi) sigma_12^2 v0 eta / T, with v0 of 000 eq. (7)
 /// (mixture_thermal_speed). For identical species v0 = sqrt(4 T / m), sqrt(2) times the one-species v0.
