@@ -286,7 +286,8 @@ def theoretical(th, y):
         m = th.get("mixture")
         if m:
             out["Maxwellian"] = [m["temperature_ratio_maxwell"]]
-            out["first Sonine"] = [m["temperature_ratio_sonine"]]
+            if "temperature_ratio_sonine" in m:  # spheres only
+                out["first Sonine"] = [m["temperature_ratio_sonine"]]
     elif y == "intruder_temperature_ratio":
         i = th.get("intruder", {})
         if "temperature_ratio_exact" in i:
@@ -312,7 +313,7 @@ def theoretical(th, y):
         out["Grad"] = [th["steady_shear"]["reduced_shear_rate"], th["steady_shear"]["eta_star"]]
     elif y == "cumulants":
         m = th.get("mixture")
-        if m:
+        if m and "a2_sonine" in m:
             out["first Sonine"] = [2.0 * a for a in m["a2_sonine"]]
         one = th.get("scaled_state")
         if one:

@@ -58,12 +58,19 @@ void add_scaled_state(const Scene& scene, const std::vector<double>& /*times*/, 
 
 /// The temperature ratio and a2_i of a binary mixture.
 void add_mixture(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j, nlohmann::json& applies) {
-  if (const auto m = theory::mixture_state(scene)) {
-    applies.push_back("binary mixture, HCS or HSS: temperature ratio and a2_i (docs/derivations/mixture-hcs.md)");
-    j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell},
-                    {"temperature_ratio_sonine", m->temperature_ratio_sonine},
-                    {"a2_sonine", {m->a2_sonine[0], m->a2_sonine[1]}}};
+  const auto m = theory::mixture_state(scene);
+  if (!m) return;
+  if (!m->first_sonine) {  // disks: the Maxwellian balance only
+    applies.push_back(
+        "binary mixture of disks, HCS or HSS: Maxwellian temperature ratio (docs/derivations/mixture-hcs.md, "
+        "\"Disks\")");
+    j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell}};
+    return;
   }
+  applies.push_back("binary mixture, HCS or HSS: temperature ratio and a2_i (docs/derivations/mixture-hcs.md)");
+  j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell},
+                  {"temperature_ratio_sonine", m->first_sonine->gamma},
+                  {"a2_sonine", {m->first_sonine->a2[0], m->first_sonine->a2[1]}}};
 }
 
 /// The intruder's bath and its exact T/T_B where known (002 eq. 22).
@@ -136,26 +143,36 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
   }
 }
 
-/// The Enskog pair correlation at contact chi_ij (000 eq. 3).
+/// The Enskog pair correlation at contact chi_ij (000 eq. 3; disks collide/enskog_chi.hpp).
 void add_enskog_chi(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
                     nlohmann::json& applies) {
-  if (scene.collision.packing_fraction > 0.0 && scene.species.size() == 1 && scene.run.dimension == 2) {
+  const double phi = scene.collision.packing_fraction;
+  if (!(phi > 0.0) || scene.species.empty()) return;
+  if (scene.species.size() == 1 && scene.run.dimension == 2) {
     applies.push_back("Enskog pair correlation at contact chi of hard disks, Henderson (Mol. Phys. 30 (1975) 971)");
-    j["henderson_chi"] = enskog_chi_disks(scene.collision.packing_fraction);
-  } else if (scene.collision.packing_fraction > 0.0 && !scene.species.empty() && scene.run.dimension == 3) {
-    const double n = total_density(scene);
-    std::vector<double> x, sigma;
-    for (const auto& s : scene.species) {
-      x.push_back(s.density / n);
-      sigma.push_back(s.diameter);
+    j["henderson_chi"] = enskog_chi_disks(phi);
+    return;
+  }
+  const double n = total_density(scene);
+  std::vector<double> x, sigma;
+  for (const auto& s : scene.species) {
+    x.push_back(s.density / n);
+    sigma.push_back(s.diameter);
+  }
+  const bool disks = scene.run.dimension == 2;
+  nlohmann::json chi = nlohmann::json::array();
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    nlohmann::json row = nlohmann::json::array();
+    for (std::size_t b = 0; b < x.size(); ++b) {
+      const int i = static_cast<int>(a), k = static_cast<int>(b);
+      row.push_back(disks ? enskog_chi_disks(phi, x, sigma, i, k) : enskog_chi(phi, x, sigma, i, k));
     }
-    nlohmann::json chi = nlohmann::json::array();
-    for (std::size_t a = 0; a < x.size(); ++a) {
-      nlohmann::json row = nlohmann::json::array();
-      for (std::size_t b = 0; b < x.size(); ++b)
-        row.push_back(enskog_chi(scene.collision.packing_fraction, x, sigma, static_cast<int>(a), static_cast<int>(b)));
-      chi.push_back(row);
-    }
+    chi.push_back(row);
+  }
+  if (disks) {
+    applies.push_back("Enskog pair correlation at contact chi_ij of a hard-disk mixture (Jenkins and Mancini 1987)");
+    j["jenkins_mancini_chi"] = chi;
+  } else {
     applies.push_back("Enskog pair correlation at contact chi_ij, Carnahan-Starling (000 eq. 3)");
     j["carnahan_starling_chi"] = chi;
   }

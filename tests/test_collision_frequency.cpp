@@ -133,7 +133,10 @@ void expect_pair_rates(int dimension, double packing_fraction) {
     for (int j = 0; j < 2; ++j) {
       const SpeciesConfig &a = s.species[i], &b = s.species[j];
       const double sigma_ij = 0.5 * (a.diameter + b.diameter);
-      const double chi = packing_fraction > 0.0 ? enskog_chi(packing_fraction, x, sigma, i, j) : 1.0;
+      double chi = 1.0;
+      if (packing_fraction > 0.0)
+        chi = dimension == 3 ? enskog_chi(packing_fraction, x, sigma, i, j)
+                             : enskog_chi_disks(packing_fraction, x, sigma, i, j);
       const double contact = dimension == 3 ? std::numbers::pi * sigma_ij * sigma_ij : 2.0 * sigma_ij;
       std::vector<double> ratio;
       for (const ReplicaSeries& rep : r.replicas) {
@@ -159,3 +162,5 @@ void expect_pair_rates(int dimension, double packing_fraction) {
 TEST(CollisionFrequency, ElasticMixtureCollidesAtTheEnskogRatePerPair) { expect_pair_rates(3, 0.2); }
 
 TEST(CollisionFrequency, ElasticMixtureOfDisksCollidesAtTheBoltzmannRatePerPair) { expect_pair_rates(2, 0.0); }
+
+TEST(CollisionFrequency, ElasticMixtureOfDisksCollidesAtTheEnskogRatePerPair) { expect_pair_rates(2, 0.3); }

@@ -13,12 +13,34 @@ TEST(EnskogChi, MonodisperseIsCarnahanStarling) {
   }
 }
 
-TEST(EnskogChi, LargerPartnersSeeMoreContacts) {
-  // chi_ij grows with sigma_i sigma_j / sigma_ij: chi_22 > chi_12 > chi_11 when sigma_2 > sigma_1.
+namespace {
+
+/// chi_ij grows with sigma_i sigma_j / sigma_ij: chi_22 > chi_12 > chi_11 when sigma_2 > sigma_1; symmetric.
+template <class Chi>
+void expect_larger_partners_see_more_contacts(Chi chi) {
   const std::vector<double> x{0.5, 0.5}, sigma{1.0, 2.0};
-  const double c11 = enskog_chi(0.3, x, sigma, 0, 0), c12 = enskog_chi(0.3, x, sigma, 0, 1),
-               c22 = enskog_chi(0.3, x, sigma, 1, 1);
+  const double c11 = chi(0.3, x, sigma, 0, 0), c12 = chi(0.3, x, sigma, 0, 1), c22 = chi(0.3, x, sigma, 1, 1);
   EXPECT_LT(c11, c12);
   EXPECT_LT(c12, c22);
-  EXPECT_DOUBLE_EQ(c12, enskog_chi(0.3, x, sigma, 1, 0));
+  EXPECT_DOUBLE_EQ(c12, chi(0.3, x, sigma, 1, 0));
+}
+
+}  // namespace
+
+TEST(EnskogChi, LargerPartnersSeeMoreContacts) {
+  expect_larger_partners_see_more_contacts([](double phi, const std::vector<double>& x,
+                                              const std::vector<double>& sigma, int i,
+                                              int j) { return enskog_chi(phi, x, sigma, i, j); });
+}
+
+TEST(EnskogChi, DiskMixtureIsHendersonForOneSpecies) {
+  // collide/enskog_chi.hpp's disk-mixture form at one species, or two identical ones, is Henderson's.
+  for (double phi : {0.0, 0.1, 0.3, 0.6}) {
+    const double henderson = enskog_chi_disks(phi);
+    EXPECT_NEAR(enskog_chi_disks(phi, {1.0}, {1.0}, 0, 0), henderson, 1e-14 * henderson);
+    EXPECT_NEAR(enskog_chi_disks(phi, {0.3, 0.7}, {2.0, 2.0}, 0, 1), henderson, 1e-14 * henderson);
+  }
+  expect_larger_partners_see_more_contacts([](double phi, const std::vector<double>& x,
+                                              const std::vector<double>& sigma, int i,
+                                              int j) { return enskog_chi_disks(phi, x, sigma, i, j); });
 }

@@ -18,4 +18,15 @@ double enskog_chi(double phi, const std::vector<double>& x, const std::vector<do
 
 double enskog_chi_disks(double phi) noexcept { return (1.0 - 7.0 * phi / 16.0) / ((1.0 - phi) * (1.0 - phi)); }
 
+double enskog_chi_disks(double phi, const std::vector<double>& x, const std::vector<double>& sigma, int i, int j) {
+  double m1 = 0.0, m2 = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    m1 += x[k] * sigma[k];
+    m2 += x[k] * sigma[k] * sigma[k];
+  }
+  const double sigma_ij = 0.5 * (sigma[i] + sigma[j]);
+  const double q = 1.0 - phi;
+  return 1.0 / q + 9.0 / 16.0 * phi / (q * q) * sigma[i] * sigma[j] * m1 / (sigma_ij * m2);
+}
+
 }  // namespace granmc

@@ -16,4 +16,12 @@ double enskog_chi(double phi, const std::vector<double>& x, const std::vector<do
 /// form (Mol. Phys. 30 (1975) 971): (1 - 7 phi / 16) / (1 - phi)^2.
 double enskog_chi_disks(double phi) noexcept;
 
+/// chi_ij of a hard-disk mixture with area fraction phi = (pi n / 4) sum_k x_k sigma_k^2, mole fractions x_k and
+/// diameters sigma_k (Jenkins and Mancini, J. Appl. Mech. 54 (1987) 27; the form of Montanero, Garzo, Alam and
+/// Luding, Granular Matter 8 (2006) 103, eq. 9):
+///   chi_ij = 1 / (1 - phi) + (9/16) phi / (1 - phi)^2 sigma_i sigma_j M_1 / (sigma_ij M_2),  M_k = sum_l x_l
+///   sigma_l^k,
+/// which is Henderson's form for one species.
+double enskog_chi_disks(double phi, const std::vector<double>& x, const std::vector<double>& sigma, int i, int j);
+
 }  // namespace granmc

@@ -21,10 +21,12 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       const SpeciesConfig& b = scene.species[j];
       const double sigma_ij = 0.5 * (a.diameter + b.diameter);
       const double phi = scene.collision.packing_fraction;
-      // Disks: one species (setup/run_plan.cpp refuses a disk mixture with a packing fraction).
-      const double chi = !(phi > 0.0)               ? 1.0
-                         : scene.run.dimension == 2 ? enskog_chi_disks(phi)
-                                                    : enskog_chi(phi, x, sigma, i, j);
+      // Disks: Henderson's form for one species, its mixture form for two (collide/enskog_chi.hpp).
+      double chi = 1.0;
+      if (phi > 0.0 && scene.run.dimension == 2)
+        chi = ns == 1 ? enskog_chi_disks(phi) : enskog_chi_disks(phi, x, sigma, i, j);
+      else if (phi > 0.0)
+        chi = enskog_chi(phi, x, sigma, i, j);
       const double alpha = scene.collision.restitution[i][j];
       PairCoefficients p;
       p.i = i;

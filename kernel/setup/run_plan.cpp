@@ -15,16 +15,17 @@ constexpr const char* supported_list =
     "supported: method = \"dsmc\" with kernel = \"hard-sphere\", one or two species, any packing_fraction in "
     "[0, 1) (Enskog chi), or kernel = \"maxwell\" or \"vhs\" with collision.rate > 0 and one species; thermostat "
     "kind = \"none\", \"gaussian\" (a fixed zeta or \"cooling-rate\") or \"white-noise\"; a [shear] rate with "
-    "hard spheres and thermostat \"none\" or \"gaussian\" (Boltzmann, or Enskog with the shifted contact "
+    "hard spheres or disks and thermostat \"none\" or \"gaussian\" (Boltzmann, or Enskog with the shifted contact "
     "velocity when packing_fraction > 0); the [relaxation] term of 003 for one species of hard spheres with "
     "the Gaussian thermostat compensating the cooling rate; method = \"event\" with one species, collision.rate > "
     "0 (the form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or "
     "\"white-noise\", packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of "
     "dimension 1 or 2 (the needle) in a \"gaussian\" or \"power-law\" bath; "
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
-    "every gas scene; hard disks (run.dimension = 2) with method = \"dsmc\", one or two species (one with a "
-    "packing_fraction: Henderson's chi), thermostat \"none\", \"gaussian\" or \"white-noise\", no shear or "
-    "relaxation; rough spheres or disks (collision.tangential_restitution > -1) with method = \"dsmc\", one species, "
+    "every gas scene; hard disks (run.dimension = 2) with method = \"dsmc\", one or two species (with a "
+    "packing_fraction: Henderson's chi, Jenkins and Mancini's chi_ij), thermostat \"none\", \"gaussian\" or "
+    "\"white-noise\", shear as for spheres, no relaxation; rough spheres or disks (collision.tangential_restitution > "
+    "-1) with method = \"dsmc\", one species, "
     "thermostat \"none\" or \"white-noise\" (on translation, or a share on the spins), no shear";
 
 [[noreturn]] void refuse(const std::string& what) {
@@ -127,12 +128,9 @@ SteppedPlan stepped_plan(const Scene& scene, Spread spread) {
   if (scene.species.empty() || scene.species.size() > 2) refuse("a scene without one or two [[species]]");
   if (scene.relaxation && (scene.species.size() != 1 || !scene.thermostat.zeta_is_cooling_rate))
     refuse(relaxation_refusal);
-  if (scene.run.dimension == 2) {
-    if (scene.collision.kernel != CollisionKernel::hard_sphere || scene.collision.rate > 0.0)
-      refuse("a gas of disks (run.dimension = 2) other than hard disks with collision.rate = 0");
-    if (scene.species.size() == 2 && scene.collision.packing_fraction > 0.0)
-      refuse("two species of disks with a packing_fraction (chi_ij of a disk mixture)");
-  }
+  if (scene.run.dimension == 2 &&
+      (scene.collision.kernel != CollisionKernel::hard_sphere || scene.collision.rate > 0.0))
+    refuse("a gas of disks (run.dimension = 2) other than hard disks with collision.rate = 0");
   SteppedPlan plan{stepped_kernel(scene), shear_effects(scene), thermostat_effects(scene), storage_choice(scene),
                    BatchedStage{}};
   std::visit(

@@ -27,7 +27,7 @@ struct Pair {
   double u, v;  // u = theta_i / s^2, v = 1 - u = theta_j / s^2 (computed separately, no cancellation)
   double b;     // b = mu_ji (1 + alpha_ij)
   double d;     // d = 2u - b = 2 (T_i - T_j)/((m_i + m_j) s^2) + mu_ji (1 - alpha_ij): vanishes at elastic equilibrium
-  double weight;  // n_j sigma_ij^2 chi_ij
+  double weight;  // n_j sigma_ij^(d-1) chi_ij
   double theta_i;
 };
 
@@ -42,7 +42,7 @@ Pair pair(const MixtureParameters& mp, int i, int j, const double T[2]) {
   q.b = mu_ji * (1.0 + al);
   q.d = 2.0 * (T[i] - T[j]) / (M * s2) + mu_ji * (1.0 - al);
   const double sij = 0.5 * (mp.diameter[i] + mp.diameter[j]);
-  q.weight = mp.density[j] * sij * sij * mp.chi[i][j];
+  q.weight = mp.dimension == 2 ? mp.density[j] * sij * mp.chi[i][j] : mp.density[j] * sij * sij * mp.chi[i][j];
   q.theta_i = thi;
   return q;
 }

@@ -24,6 +24,11 @@ struct MixtureParameters {
   double mass[2], diameter[2], density[2];
   double alpha[2][2];  // restitution alpha_ij (symmetric)
   double chi[2][2];    // pair correlation at contact chi_ij (symmetric)
+  /// 3 spheres, 2 disks. For disks only temperature_ratio_maxwell holds: the Maxwellian balance zeta_1 = zeta_2
+  /// differs from the spheres' only in the pair weights n_j sigma_ij^(d-1) chi_ij (the angular and velocity
+  /// integrals give one factor common to every pair; docs/derivations/mixture-hcs.md, "Disks"), while the a2
+  /// terms are those of d = 3.
+  int dimension = 3;
 };
 
 /// Parameters from the dimensionless set of 000 sec. 4: mu = m_1/m_2, omega = sigma_1/sigma_2,

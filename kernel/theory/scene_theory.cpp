@@ -4,7 +4,6 @@
 #include <numbers>
 
 #include "kernel/collide/enskog_chi.hpp"
-#include "kernel/theory/mixture_hcs.hpp"
 #include "kernel/theory/sonine.hpp"
 #include "kernel/theory/sonine_hcs.hpp"
 
@@ -31,9 +30,11 @@ std::optional<ScaledStatePrediction> scaled_state(const Scene& scene) {
 }
 
 std::optional<MixturePrediction> mixture_state(const Scene& scene) {
-  // The mixture theory (docs/derivations/mixture-hcs.md) is that of spheres.
-  if (scene.species.size() != 2 || !hcs_scaled_state(scene) || scene.run.dimension != 3) return std::nullopt;
+  // The mixture theory (docs/derivations/mixture-hcs.md) is that of spheres; for disks its Maxwellian balance.
+  if (scene.species.size() != 2 || !hcs_scaled_state(scene)) return std::nullopt;
+  const bool disks = scene.run.dimension == 2;
   MixtureParameters mp{};
+  mp.dimension = scene.run.dimension;
   const double n = total_density(scene);
   std::vector<double> x, sigma;
   for (const SpeciesConfig& s : scene.species) {
@@ -47,15 +48,14 @@ std::optional<MixturePrediction> mixture_state(const Scene& scene) {
     mp.density[i] = scene.species[i].density;
     for (int j = 0; j < 2; ++j) {
       mp.alpha[i][j] = scene.collision.restitution[i][j];
-      p.chi[i][j] = mp.chi[i][j] =
-          scene.collision.packing_fraction > 0.0 ? enskog_chi(scene.collision.packing_fraction, x, sigma, i, j) : 1.0;
+      const double phi = scene.collision.packing_fraction;
+      p.chi[i][j] = mp.chi[i][j] = !(phi > 0.0) ? 1.0
+                                   : disks      ? enskog_chi_disks(phi, x, sigma, i, j)
+                                                : enskog_chi(phi, x, sigma, i, j);
     }
   }
   p.temperature_ratio_maxwell = temperature_ratio_maxwell(mp);
-  const MixtureSonine sonine = mixture_first_sonine(mp);
-  p.temperature_ratio_sonine = sonine.gamma;
-  p.a2_sonine[0] = sonine.a2[0];
-  p.a2_sonine[1] = sonine.a2[1];
+  if (!disks) p.first_sonine = mixture_first_sonine(mp);
   return p;
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "kernel/core/scene.hpp"
+#include "kernel/theory/mixture_hcs.hpp"
 
 namespace granmc::theory {
 
@@ -38,8 +39,9 @@ struct ScaledStatePrediction {
 /// Two species: temperature ratio and a2_i (docs/derivations/mixture-hcs.md).
 struct MixturePrediction {
   double temperature_ratio_maxwell = 1.0;  // gamma = T_1/T_2 from zeta_1 = zeta_2, Maxwellians
-  double temperature_ratio_sonine = 1.0;   // gamma with the first-Sonine corrections
-  double a2_sonine[2] = {0.0, 0.0};        // first-Sonine a2_i (c_i = 2 a2_i, 000 Fig. 1)
+  /// gamma with the first-Sonine corrections and the first-Sonine a2_i (c_i = 2 a2_i, 000 Fig. 1); spheres
+  /// only (the a2 terms are those of d = 3).
+  std::optional<MixtureSonine> first_sonine;
   double chi[2][2] = {{1.0, 1.0}, {1.0, 1.0}};
 };
 
