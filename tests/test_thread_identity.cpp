@@ -129,8 +129,36 @@ Scene small_sheared_scene() {
   return scene_from_toml(text, {{"density", 6.0 * 0.2 / std::numbers::pi}});
 }
 
+/// Rough disks under white noise split with the spins (collide/rough_rule.hpp, effects/white_noise.hpp).
+Scene small_rough_scene() {
+  constexpr std::string_view text = R"(
+    [run]
+    dimension = 2
+    seed = 2718
+    replicas = 5
+    t_end = 1.5
+    dt = 0.005
+    samples = 6
+
+    [[species]]
+    density = 4.0  # disks collide less often than spheres: enough candidates per step for 4 threads' rounds
+    particles = 3000
+
+    [collision]
+    restitution = 0.8
+    tangential_restitution = 0.2
+
+    [thermostat]
+    kind = "white-noise"
+    beta = 1.0
+    rotational_share = 0.5
+  )";
+  return scene_from_toml(text, {});
+}
+
 std::string scheme_name(int which) {
-  const char* names[] = {"Cooling", "EventWhiteNoise", "DsmcWhiteNoise", "EnskogShearRelaxation", "WeightedWhiteNoise"};
+  const char* names[] = {
+      "Cooling", "EventWhiteNoise", "DsmcWhiteNoise", "EnskogShearRelaxation", "WeightedWhiteNoise", "RoughWhiteNoise"};
   return names[which];
 }
 
@@ -138,7 +166,7 @@ std::string scheme_name(int which) {
 
 class ThreadIdentity : public ::testing::TestWithParam<int> {};
 
-INSTANTIATE_TEST_SUITE_P(Schemes, ThreadIdentity, ::testing::Values(0, 1, 2, 3, 4),
+INSTANTIATE_TEST_SUITE_P(Schemes, ThreadIdentity, ::testing::Values(0, 1, 2, 3, 4, 5),
                          [](const auto& info) { return scheme_name(info.param); });
 
 namespace {
@@ -148,6 +176,7 @@ Scene scene_for(int which) {
   if (which == 2) return small_heated_scene("dsmc");
   if (which == 3) return small_sheared_scene();
   if (which == 4) return small_weighted_scene();
+  if (which == 5) return small_rough_scene();
   return small_cooling_scene();
 }
 
@@ -172,6 +201,8 @@ TEST_P(ThreadIdentity, TwoAndFourThreadsGiveTheBitsOfOne) {
       const ReplicaSeries& y = b.replicas[r];
       EXPECT_TRUE(bit_identical(x.temperature, y.temperature)) << "replica " << r;
       EXPECT_TRUE(bit_identical(x.species[0].a2, y.species[0].a2)) << "replica " << r;
+      EXPECT_TRUE(bit_identical(x.species[0].rotational_temperature, y.species[0].rotational_temperature))
+          << "replica " << r;
       EXPECT_TRUE(bit_identical(x.momentum, y.momentum)) << "replica " << r;
       EXPECT_TRUE(bit_identical(x.collisions, y.collisions)) << "replica " << r;
       EXPECT_EQ(x.candidates, y.candidates);
@@ -201,7 +232,7 @@ TEST(SeedIdentity, SeedChangesTheRealisation) {
 // (schemes/concurrent_rounds.hpp) on enough particles that the rounds run rather than fall back to one thread.
 class OneReplicaThreadIdentity : public ::testing::TestWithParam<int> {};
 
-INSTANTIATE_TEST_SUITE_P(Schemes, OneReplicaThreadIdentity, ::testing::Values(0, 2, 3),
+INSTANTIATE_TEST_SUITE_P(Schemes, OneReplicaThreadIdentity, ::testing::Values(0, 2, 3, 5),
                          [](const auto& info) { return scheme_name(info.param); });
 
 TEST_P(OneReplicaThreadIdentity, TwoAndFourThreadsInsideTheReplicaGiveTheBitsOfOne) {
@@ -226,6 +257,7 @@ TEST_P(OneReplicaThreadIdentity, TwoAndFourThreadsInsideTheReplicaGiveTheBitsOfO
     const ReplicaSeries& y = b.replicas[0];
     EXPECT_TRUE(bit_identical(x.temperature, y.temperature));
     EXPECT_TRUE(bit_identical(x.species[0].a2, y.species[0].a2));
+    EXPECT_TRUE(bit_identical(x.species[0].rotational_temperature, y.species[0].rotational_temperature));
     EXPECT_TRUE(bit_identical(x.momentum, y.momentum));
     EXPECT_TRUE(bit_identical(x.collisions, y.collisions));
     EXPECT_EQ(x.candidates, y.candidates);

@@ -239,7 +239,7 @@ class BatchedStage {
     set_deck(deck);
     std::copy(majorants.begin(), majorants.end(), majorant_);
     raised_ = false;
-    outcomes_.clear(), undo_.clear();
+    outcomes_.clear(), undo_.clear(), spin_undo_.clear();
     replayed_from_ = undo_replayed_from_ = 0;
     chunk_.resize((end - first + batch - 1) / batch);
     deferred_.assign(chunk_.size(), 0);
@@ -323,7 +323,7 @@ class BatchedStage {
   [[nodiscard]] std::span<const Outcome> replayed_outcomes() const noexcept {
     return std::span(outcomes_).subspan(replayed_from_);
   }
-  /// Restores the velocities that replay_deferred overwrote, then those that run_chunk overwrote.
+  /// Restores the velocities (and spins) that replay_deferred overwrote, then those that run_chunk overwrote.
   void undo_replayed() noexcept { undo(undo_replayed_from_, undo_.size()); }
   void undo_chunk() noexcept { undo(0, undo_replayed_from_); }
 
@@ -468,7 +468,6 @@ class BatchedStage {
     const std::size_t q = one_pair ? 0 : d.qs[b];
     const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
     if constexpr (in_round) {
-      static_assert(!rough, "rough particles collide in order (schemes/concurrent_rounds.hpp)");
       undo_.emplace_back(d.pk[b], vk);
       undo_.emplace_back(d.pl[b], vl);
     }
@@ -478,6 +477,10 @@ class BatchedStage {
       Store& store_l = *store_l_[q];
       const std::size_t k = store_k.index(d.pk[b]), l = store_l.index(d.pl[b]);
       Vec3 sk = store_k.spin(k), sl = store_l.spin(l);
+      if constexpr (in_round) {  // the spins before the collision, entry by entry beside undo_
+        spin_undo_.push_back({&store_k, k, sk});
+        spin_undo_.push_back({&store_l, l, sl});
+      }
       twice_energy_loss = rough_collision(vk, vl, sk, sl, sigma, g_sigma, p);
       store_k.set_spin(k, sk);
       store_l.set_spin(l, sl);
@@ -656,7 +659,10 @@ class BatchedStage {
   }
 
   void undo(std::size_t from, std::size_t to) noexcept {
-    for (std::size_t e = to; e > from; --e) undo_[e - 1].first.set_velocity(undo_[e - 1].second);
+    for (std::size_t e = to; e > from; --e) {
+      undo_[e - 1].first.set_velocity(undo_[e - 1].second);
+      if constexpr (rough) spin_undo_[e - 1].store->set_spin(spin_undo_[e - 1].index, spin_undo_[e - 1].spin);
+    }
   }
 
   static std::uintptr_t slot(const typename Store::Particle& p) noexcept {
@@ -698,6 +704,12 @@ class BatchedStage {
   AddressSet held_back_;
   std::vector<Outcome> outcomes_;
   std::vector<std::pair<typename Store::Particle, Vec3>> undo_;  // particle, velocity before a collision
+  struct SpinBefore {
+    Store* store;
+    std::size_t index;
+    Vec3 spin;
+  };
+  std::vector<SpinBefore> spin_undo_;  // rough particles: entry e the spin of undo_[e]'s particle before it
   std::size_t replayed_from_ = 0, undo_replayed_from_ = 0;
   bool raised_ = false;
 };

@@ -14,11 +14,11 @@
 // chunk, names: every particle sees the updates of the serial order, in that order. What the chunks share
 // is the majorant, which a collision raises when omega exceeds it (000 sec. 3): all chunks test against
 // its value at the round's start, which is the serial value unless a candidate raises it. If one does,
-// the round's velocities are restored from the overwritten values kept in step 2 and 3, and the round runs
-// again in order on one thread. Raises are rare (a few per run); a candidate of chunk t is deferred with
-// probability about 4 B t / N (0.08 % at N = 10^7, B = 2048, t = 1).
-// On the 2-core host measured, two threads in rounds are slower than one (0.8x at N = 10^7: the claim pass
-// takes the memory misses that the one-thread stage hides, docs/scaling.md), so they run only when asked for
+// the round's velocities (and the spins of rough particles, beside the records under the same index) are
+// restored from the overwritten values kept in step 2 and 3, and the round runs again in order on one thread. Raises
+// are rare (a few per run); a candidate of chunk t is deferred with probability about 4 B t / N (0.08 % at N = 10^7, B
+// = 2048, t = 1). On the 2-core host measured, two threads in rounds are slower than one (0.8x at N = 10^7: the claim
+// pass takes the memory misses that the one-thread stage hides, docs/scaling.md), so they run only when asked for
 // (RunOptions::threads_per_replica).
 #include <omp.h>
 
@@ -145,16 +145,13 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
 
 }  // namespace detail
 
-/// collide_step (schemes/collision_stage.hpp) on rounds.threads threads, the same bits; on one for rough
-/// particles.
+/// collide_step (schemes/collision_stage.hpp) on rounds.threads threads, the same bits.
 template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift, class Real = double>
 void collide_step_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs,
                             std::span<double> omega_max, std::span<const std::uint64_t> candidates,
                             const RandomStream& rng, std::span<CollisionTally> tallies, ConcurrentRounds& rounds,
                             const Kernel& kernel = {}, const Shift& shift = {}) {
-  if constexpr (rough_kernel<Kernel>) {  // the rounds keep no spins to undo: rough particles collide in order
-    collide_step<Kernel, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
-  } else if (pairs.size() == 1) {
+  if (pairs.size() == 1) {
     detail::collide_in_rounds<Kernel, Shift, true, batch>(state, pairs, omega_max, candidates, rng, tallies, kernel,
                                                           shift, rounds);
   } else {
