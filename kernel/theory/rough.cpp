@@ -4,13 +4,20 @@
 
 namespace granmc::theory {
 
+namespace {
+
+/// d_r = d (d - 1) / 2, the rotational degrees of freedom (3 spheres, 1 disks).
+double rotational_dimensions(double d) noexcept { return d * (d - 1.0) / 2.0; }
+
+}  // namespace
+
 double rough_tangential_factor(double beta, double kappa) noexcept {
   return (1.0 + beta) * kappa / (2.0 * (1.0 + kappa));
 }
 
 RoughCoolingRates rough_cooling_rates(double alpha, double beta, double kappa, double theta, int dimension) noexcept {
   const double b = rough_tangential_factor(beta, kappa);
-  const double d = dimension, rotations = d * (d - 1.0) / 2.0, c = 2.0 * (d - 1.0);
+  const double d = dimension, rotations = rotational_dimensions(d), c = 2.0 * (d - 1.0);
   return {((1.0 - alpha * alpha) + c * (b - b * b * (1.0 + theta / kappa))) / d,
           c * (b / kappa) * (1.0 - b * (1.0 / theta + 1.0 / kappa)) / rotations};
 }
@@ -18,7 +25,7 @@ RoughCoolingRates rough_cooling_rates(double alpha, double beta, double kappa, d
 double rough_hcs_theta(double alpha, double beta, double kappa, int dimension) noexcept {
   const double b = rough_tangential_factor(beta, kappa);
   if (b == 0.0) return 0.0;
-  const double d = dimension, rotations = d * (d - 1.0) / 2.0, c = 2.0 * (d - 1.0);
+  const double d = dimension, rotations = rotational_dimensions(d), c = 2.0 * (d - 1.0);
   // theta (zeta_tr - zeta_rot) = q2 theta^2 + q1 theta + q0 = 0, with q2 < 0 < q0: one positive root.
   const double q2 = -c * b * b / (kappa * d);
   const double q1 = ((1.0 - alpha * alpha) + c * (b - b * b)) / d - c * (b / kappa) * (1.0 - b / kappa) / rotations;
@@ -34,7 +41,7 @@ double rough_white_noise_theta(double beta, double kappa) noexcept {
 double rough_split_noise_theta(double alpha, double beta, double kappa, double rotational_share,
                                int dimension) noexcept {
   if (rotational_share == 0.0) return rough_white_noise_theta(beta, kappa);
-  const double d = dimension, rotations = d * (d - 1.0) / 2.0;
+  const double d = dimension, rotations = rotational_dimensions(d);
   const auto imbalance = [&](double theta) {  // grows with theta (rough.hpp)
     const RoughCoolingRates z = rough_cooling_rates(alpha, beta, kappa, theta, dimension);
     return (1.0 - rotational_share) * rotations * theta * z.rotation - rotational_share * d * z.translation;
