@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+"""What a collision costs in each model: smooth and rough spheres and disks, whole `granmc run` on one thread.
+
+Usage: /usr/bin/python3 perf/model_cost.py [--granmc build/bin/granmc] [--runs 3] [--work DIR]
+       (`make bench-models`; about 20 s per run of 10^7 particles on this host, 4 x runs runs)
+
+Scenes: drivers/scenes/model_cost/ (one replica of 10^7 particles, the cooling state at alpha = 0.9, rough ones
+with beta = 0; disks run twice as long, so that every scene has about the same number of collisions). Each
+pair below runs its two scenes alternately, so that they share the state of the (shared, noisy) machine. The
+figure is the summary's wall_seconds per collision (set-up included); the script prints every run's
+collisions per second and, per pair, the ratio of the median costs per collision and the range of the
+run-by-run ratios. Results: docs/performance.md, "What each model costs".
+"""
+import argparse
+import os
+import statistics
+import sys
+import tempfile
+
+from thread_scaling import run
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = os.path.join(ROOT, "drivers", "scenes", "model_cost")
+PAIRS = [  # the model, its reference
+    ("rough_spheres", "spheres"),
+    ("rough_disks", "disks"),
+    ("disks", "spheres"),
+]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--granmc", default=os.path.join(ROOT, "build", "bin", "granmc"))
+    p.add_argument("--runs", type=int, default=3)
+    p.add_argument("--work", default=None, help="directory for the files (default: a temporary one)")
+    args = p.parse_args()
+    work = args.work or tempfile.mkdtemp(prefix="granmc-models-")
+    os.makedirs(work, exist_ok=True)
+    print("| model / reference | collisions/s, model | collisions/s, reference | cost per collision, ratio of the "
+          "medians | run-by-run ratios |")
+    print("|---|---|---|---|---|")
+    for model, reference in PAIRS:
+        cost = {model: [], reference: []}
+        for k in range(args.runs):
+            for name in (model, reference):
+                s = run(args.granmc, os.path.join(SCENES, name + ".toml"), 1, [], os.path.join(work, f"{name}.{k}"))
+                cost[name].append(s["wall_seconds"] / s["collisions"])
+        ratios = [a / b for a, b in zip(cost[model], cost[reference])]
+        rate = {name: ", ".join(f"{1.0 / c:.2e}" for c in cost[name]) for name in cost}
+        print(f"| {model} / {reference} | {rate[model]} | {rate[reference]} | "
+              f"{statistics.median(cost[model]) / statistics.median(cost[reference]):.2f} | "
+              f"{min(ratios):.2f} - {max(ratios):.2f} |")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
