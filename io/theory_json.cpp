@@ -90,7 +90,7 @@ void add_intruder(const Scene& scene, const std::vector<double>& /*times*/, nloh
 }
 
 /// The kernel form of 001: Maxwell's exact temperature relaxation, the white-noise steady state and tails;
-/// the first-Sonine white-noise a2 of hard spheres in 000's form.
+/// the white-noise steady state of hard spheres or disks in 000's form (first-Sonine a2, temperature, tails).
 void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohmann::json& j, nlohmann::json& applies) {
   const int d = scene.run.dimension;
   if (scene.species.size() == 1 && scene.collision.rate > 0.0 && d == 3) {  // the kernel form of 001
@@ -138,8 +138,20 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
   } else if (scene.thermostat.kind == ThermostatKind::white_noise && scene.species.size() == 1 &&
              scene.collision.kernel == CollisionKernel::hard_sphere) {
     applies.push_back(std::string("white-noise heated steady state, monodisperse ") +
-                      (d == 2 ? "hard disks" : "hard spheres") + ": first-Sonine a2");
-    j["white_noise"] = {{"a2", theory::white_noise_a2(scene.collision.restitution[0][0], d)}};
+                      (d == 2 ? "hard disks" : "hard spheres") +
+                      ": first-Sonine a2, steady temperature from the energy balance, tail exponent b = 3/2 of "
+                      "f ~ exp(-a c^b) (van Noije and Ernst 1998, any d)");
+    const SpeciesConfig& sp = scene.species[0];
+    const double alpha = scene.collision.restitution[0][0], phi = scene.collision.packing_fraction;
+    const double chi = phi > 0.0 ? (d == 2 ? enskog_chi_disks(phi) : enskog_chi(phi, {1.0}, {sp.diameter}, 0, 0)) : 1.0;
+    const double a2 = theory::white_noise_a2(alpha, d), beta = scene.thermostat.beta;
+    auto temperature = [&](double a) {
+      return theory::white_noise_temperature(alpha, sp.density, sp.diameter, sp.mass, chi, beta, a, d);
+    };
+    j["white_noise"] = {{"a2", a2},
+                        {"steady_temperature_maxwellian", temperature(0.0)},
+                        {"steady_temperature_first_sonine", temperature(a2)},
+                        {"tail_exponent", 1.5}};
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include "kernel/theory/sonine.hpp"
 #include "kernel/theory/sonine_hcs.hpp"
+#include "kernel/theory/white_noise.hpp"
 
 // Beyond-linear Sonine theory of the HCS (kernel/theory/sonine_hcs.hpp, docs/derivations/sonine-hcs.md).
 // Reference numbers below are from our own exact (rational-arithmetic) derivation,
@@ -166,4 +167,18 @@ TEST(SonineHcs, CoolingRateFactorIsMu2Ratio) {
         EXPECT_NEAR(hcs_cooling_rate_factor(a2, a3), ratio, 1e-15);
       }
   EXPECT_EQ(hcs_cooling_rate_factor(0.0, 0.0), 1.0);
+}
+
+TEST(WhiteNoiseTemperature, IsThe001EnergyBalanceForHardSpheresAndBalancesTheHeating) {
+  // 000's hard spheres with n sigma^2 = 4 rate are 001's kernel form with lambda = 1 (collide/pair_coefficients.cpp):
+  // the two energy balances give the same steady temperature, with or without the first-Sonine factor.
+  for (double alpha : {0.3, 0.7, 0.95})
+    for (double a2 : {0.0, 0.05}) {
+      const double rate = 0.7, beta = 1.3;
+      const double t = granmc::theory::white_noise_temperature(alpha, 4.0 * rate, 1.0, 1.0, 1.0, beta, a2, 3);
+      EXPECT_NEAR(t, granmc::theory::white_noise_steady_temperature(1.0, rate, alpha, beta, a2), 1e-12 * t) << alpha;
+    }
+  // Disks, mass 2, chi 1.4: at the steady temperature the cooling zeta T takes the heating 2 beta m.
+  const double t = granmc::theory::white_noise_temperature(0.6, 0.8, 1.2, 2.0, 1.4, 0.9, 0.03, 2);
+  EXPECT_NEAR(granmc::theory::cooling_rate(0.6, 0.8, 1.2, 2.0, t, 1.4, 0.03, 2) * t, 2.0 * 0.9 * 2.0, 1e-12);
 }

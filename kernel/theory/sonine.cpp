@@ -31,6 +31,12 @@ double cooling_rate(double alpha, double density, double diameter, double mass, 
          (1.0 + 3.0 * a2 / 16.0);  // sigma^(d-1)
 }
 
+double white_noise_temperature(double alpha, double density, double diameter, double mass, double chi, double beta,
+                               double a2, int dimension) noexcept {
+  const double zeta_at_one = cooling_rate(alpha, density, diameter, mass, 1.0, chi, a2, dimension);
+  return std::pow(2.0 * beta * mass / zeta_at_one, 2.0 / 3.0);
+}
+
 double haff_temperature(double t, double temperature0, double cooling_rate0) noexcept {
   const double s = 1.0 + 0.5 * cooling_rate0 * t;
   return temperature0 / (s * s);

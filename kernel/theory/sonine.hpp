@@ -28,6 +28,12 @@ double collision_frequency(double density, double diameter, double mass, double 
 double cooling_rate(double alpha, double density, double diameter, double mass, double temperature, double chi,
                     double a2, int dimension = 3) noexcept;
 
+/// The steady temperature of a monodisperse hard-core gas heated by white noise (effects/white_noise.hpp, on
+/// translation): the heating dT/dt = 2 beta m balances the cooling zeta(T) T, and zeta ~ sqrt(T), so
+/// T = (2 beta m / zeta(T = 1))^(2/3) with zeta of cooling_rate at the given a2 (0: the Maxwellian closure).
+double white_noise_temperature(double alpha, double density, double diameter, double mass, double chi, double beta,
+                               double a2, int dimension = 3) noexcept;
+
 /// Haff's law: T(t) = T0 / (1 + zeta0 t / 2)^2, with zeta0 the cooling rate at T0 (zeta ~ sqrt(T)).
 double haff_temperature(double t, double temperature0, double cooling_rate0) noexcept;
 
