@@ -18,10 +18,9 @@ double enskog_chi_disks(double phi) noexcept;
 
 /// chi_ij of a hard-disk mixture with area fraction phi = (pi n / 4) sum_k x_k sigma_k^2, mole fractions x_k and
 /// diameters sigma_k (Jenkins and Mancini, J. Appl. Mech. 54 (1987) 27; the form of Montanero, Garzo, Alam and
-/// Luding, Granular Matter 8 (2006) 103, eq. 9):
-///   chi_ij = 1 / (1 - phi) + (9/16) phi / (1 - phi)^2 sigma_i sigma_j M_1 / (sigma_ij M_2),  M_k = sum_l x_l
-///   sigma_l^k,
-/// which is Henderson's form for one species.
+/// Luding, Granular Matter 8 (2006) 103), which is Henderson's form for one species:
+///   chi_ij = 1 / (1 - phi) + (9/16) phi / (1 - phi)^2 sigma_i sigma_j M_1 / (sigma_ij M_2),
+///   M_k = sum_l x_l sigma_l^k.
 double enskog_chi_disks(double phi, const std::vector<double>& x, const std::vector<double>& sigma, int i, int j);
 
 }  // namespace granmc
