@@ -15,11 +15,11 @@
 // is the majorant, which a collision raises when omega exceeds it (000 sec. 3): all chunks test against
 // its value at the round's start, which is the serial value unless a candidate raises it. If one does,
 // the round's velocities (and the spins of rough particles, beside the records under the same index) are
-// restored from the overwritten values kept in step 2 and 3, and the round runs again in order on one thread. Raises
-// are rare (a few per run); a candidate of chunk t is deferred with probability about 4 B t / N (0.08 % at N = 10^7, B
-// = 2048, t = 1). On the 2-core host measured, two threads in rounds are slower than one (0.8x at N = 10^7: the claim
-// pass takes the memory misses that the one-thread stage hides, docs/scaling.md), so they run only when asked for
-// (RunOptions::threads_per_replica).
+// restored from the overwritten values kept in step 2 and 3, and the round runs again in order on one
+// thread. Raises are rare (a few per run); a candidate of chunk t is deferred with probability about
+// 4 B t / N (0.08 % at N = 10^7, B = 2048, t = 1). On the 2-core host measured, two threads in rounds are
+// slower than one (0.8x at N = 10^7: the claim pass takes the memory misses that the one-thread stage
+// hides, docs/scaling.md), so they run only when asked for (RunOptions::threads_per_replica).
 #include <omp.h>
 
 #include <algorithm>
