@@ -292,15 +292,18 @@ void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohman
                       {"kappa", kappa},
                       {"tangential_factor", theory::rough_tangential_factor(beta, kappa)}};
   const std::string particles = d == 2 ? "rough hard disks" : "rough hard spheres";
-  if (scene.thermostat.kind == ThermostatKind::none) {
+  if (scene.thermostat.kind != ThermostatKind::white_noise) {
+    // The Gaussian thermostat scales translation and spins alike, so its steady state is the cooling state's
+    // in scaled variables (docs/physics.md, "Rough particles").
     const double theta = theory::rough_hcs_theta(alpha, beta, kappa, d);
     const theory::RoughCoolingRates z = theory::rough_cooling_rates(alpha, beta, kappa, theta, d);
     r["theta_hcs"] = theta;
     r["cooling_rate_over_nu_hcs"] = z.translation;
-    applies.push_back("homogeneous cooling state, monodisperse " + particles +
+    applies.push_back("homogeneous cooling state (or its scaled state under the Gaussian thermostat), monodisperse " +
+                      particles +
                       ", Maxwellian approximation: T_rot / T_tr and the cooling rate (Huthmann and Zippelius 1997; "
                       "docs/derivations/rough-hcs.md)");
-  } else if (scene.thermostat.kind == ThermostatKind::white_noise) {
+  } else {
     const double share = scene.thermostat.rotational_share;
     r["rotational_share"] = share;
     r["theta_white_noise"] = theory::rough_split_noise_theta(alpha, beta, kappa, share, d);

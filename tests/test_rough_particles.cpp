@@ -2,6 +2,7 @@
 // published:
 //  - perfectly rough elastic particles (alpha = beta = 1) conserve translational plus rotational energy over a
 //    run, and the translational bookkeeping closes (energy_residual);
+//  - the Gaussian thermostat holds T and gives the cooling state's theta;
 //  - rough hard disks (kappa = 1/2) under white noise on translation, and with half its power on the spins (the
 //    splitting thermostat, effects/white_noise.hpp): theta = T_rot / T_tr against the DSMC of Megias and Santos,
 //    Front. Phys. 10 (2022) 971671, data files `Steady states/theta_st_DSMC_{alpha}_{beta}.txt` of
@@ -97,6 +98,28 @@ TEST(RoughParticles, PerfectlyRoughElasticParticlesConserveTheirEnergy) {
       EXPECT_LT(*rep.energy_residual, energy_balance_tolerance);
     }
   }
+}
+
+TEST(RoughParticles, GaussianThermostatHoldsTheCoolingStatesTheta) {
+  // The Gaussian thermostat scales velocities and spins alike (the velocity scale), so its steady state is the
+  // cooling state in scaled variables: the same theta = T_rot / T. Rough disks, alpha = 0.9, beta = 0; with zeta =
+  // "cooling-rate" T stays at its value at t = 0 to rounding. theta of the two runs over their last halves; the
+  // cooling run is four times longer, as its collisions slow down with T (about 16 per particle by t = 64, where
+  // its theta has settled; the heated run's settles within t = 6).
+  const Scene cooling = rough_disks(0.9, 0.0, 0.01, false, 10000, 16, 64.0);
+  Scene heated = rough_disks(0.9, 0.0, 0.01, false, 10000, 16, 16.0);
+  heated.thermostat.kind = ThermostatKind::gaussian;
+  heated.thermostat.zeta_is_cooling_rate = true;
+  const RunResult a = run_scene(cooling, {}), b = run_scene(heated, {});
+  for (const ReplicaSeries& rep : b.replicas)
+    for (double t : rep.species[0].temperature) EXPECT_NEAR(t, rep.species[0].temperature.front(), 1e-12);
+  EXPECT_LT(a.replicas[0].species[0].temperature.back(), 0.01);  // the cooling run did cool
+  const MeanCI theta_cooling = replica_mean(stationary_theta(a)), theta_heated = replica_mean(stationary_theta(b));
+  std::printf("theta: cooling %.5f +- %.5f, Gaussian thermostat %.5f +- %.5f\n", theta_cooling.mean, theta_cooling.ci,
+              theta_heated.mean, theta_heated.ci);
+  const MeanCI difference{theta_heated.mean - theta_cooling.mean, std::hypot(theta_heated.ci, theta_cooling.ci)};
+  // Bound: the CI of the difference measured today, 0.0062, times 1.5.
+  EXPECT_TRUE(within_ci("theta, Gaussian thermostat minus cooling", difference, 0.0, 0.0093));
 }
 
 namespace {

@@ -26,7 +26,8 @@ constexpr const char* supported_list =
     "packing_fraction: Henderson's chi, Jenkins and Mancini's chi_ij), thermostat \"none\", \"gaussian\" or "
     "\"white-noise\", shear as for spheres, no relaxation; rough spheres or disks (collision.tangential_restitution > "
     "-1) with method = \"dsmc\", one species, "
-    "thermostat \"none\" or \"white-noise\" (on translation, or a share on the spins), no shear";
+    "thermostat \"none\", \"gaussian\" (scaling velocities and spins alike) or \"white-noise\" (on translation, or "
+    "a share on the spins), no shear";
 
 [[noreturn]] void refuse(const std::string& what) {
   throw PlanRefusal("this version of granmc cannot run " + what + " yet; " + supported_list);

@@ -83,8 +83,6 @@ template <class Kernel, class Shear, class Thermostat>
 constexpr const char* stepped_refusal() noexcept {
   if constexpr (rough_kernel<Kernel> && !Shear::empty)
     return "a [shear] rate with rough particles (collision.tangential_restitution > -1)";
-  else if constexpr (rough_kernel<Kernel> && Thermostat::template has<GaussianThermostat>)
-    return "the Gaussian thermostat with rough particles (collision.tangential_restitution > -1)";
   else if constexpr (!Shear::empty && !std::is_same_v<Kernel, HardCore<Kernel::dimension>>)
     return "a [shear] rate with kernel = \"maxwell\" or \"vhs\"";
   else if constexpr (!Shear::empty && Thermostat::template has<WhiteNoise>)
