@@ -89,28 +89,30 @@ void add_intruder(const Scene& scene, const std::vector<double>& /*times*/, nloh
   }
 }
 
-/// The kernel form of 001: Maxwell's exact temperature relaxation, the white-noise steady state and tails;
-/// the white-noise steady state of hard spheres or disks in 000's form (first-Sonine a2, temperature, tails).
+/// The kernel form of 001, spheres or disks: Maxwell's exact temperature relaxation, the white-noise steady
+/// state (Maxwell's exact a2, hard cores' first-Sonine a2) and tails; the white-noise steady state of hard
+/// spheres or disks in 000's form (first-Sonine a2, temperature, tails).
 void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohmann::json& j, nlohmann::json& applies) {
   const int d = scene.run.dimension;
-  if (scene.species.size() == 1 && scene.collision.rate > 0.0 && d == 3) {  // the kernel form of 001
+  if (scene.species.size() == 1 && scene.collision.rate > 0.0) {  // the kernel form of 001
     const double alpha = scene.collision.restitution[0][0], rate = scene.collision.rate;
     const double beta = scene.thermostat.kind == ThermostatKind::white_noise ? scene.thermostat.beta : 0.0;
     const double lambda = scene.collision.lambda;
     j["times"] = times;
     if (lambda == 0.0) {
       applies.push_back(
-          "Maxwell pseudomolecules: exact temperature relaxation (001 eqs. 16-17), and (1 - 1/n) "
-          "times it for the n-particle system (docs/physics.md)");
+          "Maxwell pseudomolecules: exact temperature relaxation (001 eqs. 16-17; |S^(d-1)| rate (1 - alpha^2) / 4 "
+          "in d dimensions), and (1 - 1/n) times it for the n-particle system (docs/physics.md)");
       const double n = static_cast<double>(scene.species[0].particles);
       std::vector<double> exact, particles, uncentred;
       for (double t : times) {
-        exact.push_back(theory::maxwell_temperature(t, scene.initial_temperature, beta, rate, alpha));
-        particles.push_back(theory::maxwell_temperature_particles(t, scene.initial_temperature, beta, rate, alpha, n));
-        uncentred.push_back(theory::maxwell_temperature_uncentred(t, scene.initial_temperature, beta, rate, alpha, n,
-                                                                  scene.species[0].mass, scene.initial_zero_momentum));
+        exact.push_back(theory::maxwell_temperature(t, scene.initial_temperature, beta, rate, alpha, d));
+        particles.push_back(
+            theory::maxwell_temperature_particles(t, scene.initial_temperature, beta, rate, alpha, n, d));
+        uncentred.push_back(theory::maxwell_temperature_uncentred(
+            t, scene.initial_temperature, beta, rate, alpha, n, scene.species[0].mass, scene.initial_zero_momentum, d));
       }
-      j["maxwell_relaxation"] = {{"rate", theory::maxwell_relaxation_rate(rate, alpha)},
+      j["maxwell_relaxation"] = {{"rate", theory::maxwell_relaxation_rate(rate, alpha, d)},
                                  {"temperature", exact},
                                  {"temperature_particles", particles},
                                  {"temperature_uncentred_particles", uncentred}};
@@ -118,14 +120,16 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
     if (beta > 0.0) {
       applies.push_back(
           "white-noise heated steady state: temperature from the energy balance (001 eq. 15), "
-          "tail exponent b = 1 + lambda/2 (001 eqs. 19-21)");
+          "tail exponent b = 1 + lambda/2 (001 eqs. 19-21), a2 exact for Maxwell pseudomolecules and "
+          "first-Sonine for hard cores");
       nlohmann::json w = {
           {"tail_exponent", theory::tail_exponent(lambda)},
-          {"steady_temperature_maxwellian", theory::white_noise_steady_temperature(lambda, rate, alpha, beta, 0.0)}};
+          {"steady_temperature_maxwellian", theory::white_noise_steady_temperature(lambda, rate, alpha, beta, 0.0, d)}};
+      if (lambda == 0.0) w["a2"] = theory::maxwell_white_noise_a2(alpha, d);
       if (lambda == 1.0) {
-        const double a2 = theory::white_noise_a2(alpha);
+        const double a2 = theory::white_noise_a2(alpha, d);
         w["a2"] = a2;
-        w["steady_temperature_first_sonine"] = theory::white_noise_steady_temperature(lambda, rate, alpha, beta, a2);
+        w["steady_temperature_first_sonine"] = theory::white_noise_steady_temperature(lambda, rate, alpha, beta, a2, d);
       }
       j["white_noise"] = w;
     }

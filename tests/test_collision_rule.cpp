@@ -6,13 +6,17 @@
 #include <cmath>
 #include <numbers>
 #include <span>
+#include <string>
 #include <string_view>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
 #include "kernel/collide/enskog_chi.hpp"
+#include "kernel/collide/hard_disk_scattering.hpp"
 #include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
+#include "kernel/collide/isotropic_scattering.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
@@ -188,6 +192,101 @@ TEST(ImpactDirection, HasTheDensityOfTheCollisionKernelForDisks) {
     EXPECT_EQ(x[k], one.x);
     EXPECT_EQ(y[k], one.y);
     EXPECT_EQ(z[k], one.z);
+  }
+}
+
+// Disks with the isotropic law (Maxwell and VHS kernels): sigma-hat at an angle theta uniform on (-pi/2, pi/2),
+// so that the scattering direction e = g-hat - 2 (g-hat.sigma) sigma-hat, at angle pi - 2 theta to g-hat, is
+// uniform on the circle (001 eq. 4): a chi-square test of e's angle (20 bins, 10^6 draws). The lanes of
+// impact_variates are the bits of impact_variate.
+TEST(ImpactDirection, MakesTheScatteringOfDisksIsotropicWithTheIsotropicLaw) {
+  constexpr int bins = 20, n = 1'000'000;
+  constexpr double chi2_999_19 = 43.8202;
+  constexpr ImpactLaw law = ImpactLaw::isotropic;
+  const RandomStream rng(2, 4);
+  for (const Vec3 g : {Vec3{2.5, 0.0, 0.0}, Vec3{-1.3, 0.4, 0.0}}) {
+    const double g_norm = norm(g);
+    const Vec3 h = (1.0 / g_norm) * g;
+    std::array<int, bins> counts{};
+    for (int k = 0; k < n; ++k) {
+      const RandomBlock r = rng.block(RngPurpose::collision_pair, 0, 0, static_cast<std::uint64_t>(k));
+      const ImpactDirection d =
+          impact_direction<2>(g, g_norm, impact_variate<2, law>(uniform_open(r[0]), uniform_open(r[1])));
+      ASSERT_GT(d.g_sigma, 0.0);
+      const Vec3 e = h - (2.0 * dot(h, d.sigma)) * d.sigma;
+      const double angle = std::atan2(h.x * e.y - h.y * e.x, dot(h, e));  // in (-pi, pi]
+      ++counts[std::min(static_cast<int>((angle / (2.0 * std::numbers::pi) + 0.5) * bins), bins - 1)];
+    }
+    double chi2 = 0.0;
+    for (int c : counts) chi2 += (c - n / bins) * (c - n / bins) / static_cast<double>(n / bins);
+    EXPECT_LT(chi2, chi2_999_19) << "angle of e to g-hat, g = (" << g.x << ", " << g.y << ")";
+  }
+  constexpr std::size_t lanes = 16;
+  std::array<double, lanes> u1, u2, x, y, z;
+  for (std::size_t k = 0; k < lanes; ++k) u1[k] = (k + 0.5) / lanes, u2[k] = 1.0 - u1[k];
+  impact_variates<2, law>(std::span<const double, lanes>(u1), std::span<const double, lanes>(u2), std::span(x),
+                          std::span(y), std::span(z));
+  for (std::size_t k = 0; k < lanes; ++k) {
+    const Vec3 one = impact_variate<2, law>(u1[k], u2[k]);
+    EXPECT_EQ(x[k], one.x);
+    EXPECT_EQ(y[k], one.y);
+    EXPECT_EQ(z[k], one.z);
+  }
+}
+
+// The event scheme's hard disks (collide/hard_disk_scattering.hpp): e from s = sin(theta) is the reflection of
+// u-hat by sigma-hat at angle theta, so 001 eq. (4) with it is 000's rule v' = v - (1 + alpha)/2 (u.sigma)
+// sigma-hat (to rounding); s uniform gives the mean mu = u-hat.e = -1/3 (a midpoint sum over s, error O(1/N^2)).
+TEST(HardDiskScattering, IsTheReflectionOfTheHardDiskLaw) {
+  const Vec3 v{0.7, -1.2, 0.0}, w{-0.4, 0.3, 0.0};
+  const Vec3 u = v - w;
+  const double u_norm = norm(u), alpha = 0.6;
+  const Vec3 h = (1.0 / u_norm) * u, perp{-h.y, h.x, 0.0};
+  constexpr int points = 10000;
+  double mean_mu = 0.0, worst = 0.0;
+  for (int k = 0; k < points; ++k) {
+    const double s = 2.0 * (k + 0.5) / points - 1.0, c = std::sqrt(1.0 - s * s);
+    const Vec3 e = hard_disk_scattering_direction(u, u_norm, s);
+    const Vec3 sigma = c * h + s * perp;
+    Vec3 a = v, b = w;
+    isotropic_scattering(a, b, e, alpha);
+    const Vec3 rule = v - (0.5 * (1.0 + alpha) * dot(u, sigma)) * sigma;
+    worst = std::max({worst, std::abs(norm(e) - 1.0), norm(a - rule), norm(e - (h - (2.0 * c) * sigma))});
+    ASSERT_EQ(e.z, 0.0);
+    mean_mu += dot(h, e) / points;
+  }
+  EXPECT_LT(worst, 1e-14);
+  EXPECT_NEAR(mean_mu, -1.0 / 3.0, 1e-7);
+}
+
+// 001's kernel form (collision.rate > 0) in the plane: the pair prefactor times the kernel's mean angular weight
+// is 2 pi rate, the total rate per pair over |g|^lambda, for each law (4 pi rate on the sphere).
+TEST(PairCoefficients, TheRateFormGivesEveryPairTheRateOfTheKernel) {
+  for (const auto& [kernel, law, d] :
+       {std::tuple{"hard-sphere", ImpactLaw::hard_core, 2}, std::tuple{"maxwell", ImpactLaw::isotropic, 2},
+        std::tuple{"vhs", ImpactLaw::isotropic, 2}, std::tuple{"hard-sphere", ImpactLaw::hard_core, 3},
+        std::tuple{"maxwell", ImpactLaw::isotropic, 3}}) {
+    const Scene s = granmc::testing::scene_from_toml(R"(
+      [run]
+      t_end = 1.0
+      dt = 0.01
+      dimension = ${d}
+      [[species]]
+      particles = 100
+      [collision]
+      kernel = "${kernel}"
+      lambda = ${lambda}
+      rate = 0.3
+      restitution = 0.9
+    )",
+                                                     {{"d", d},
+                                                      {"kernel", kernel},
+                                                      {"lambda", std::string(kernel) == "maxwell" ? 0.0
+                                                                 : std::string(kernel) == "vhs"   ? 0.5
+                                                                                                  : 1.0}});
+    const double sphere = d == 2 ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi;
+    EXPECT_NEAR(pair_coefficients(s)[0].rate_prefactor * mean_angular_weight(d, law), sphere * 0.3, 1e-14)
+        << kernel << ", d = " << d;
   }
 }
 

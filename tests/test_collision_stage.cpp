@@ -6,10 +6,12 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "kernel/collide/hard_sphere.hpp"
+#include "kernel/collide/variable_hard_spheres.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/concurrent_rounds.hpp"
 #include "kernel/schemes/initial_state.hpp"
@@ -82,6 +84,11 @@ struct HardDiskUnscreened : HardDisk {
   static constexpr bool screen_candidates = false;
 };
 
+/// Variable hard disks (the isotropic law: sigma-hat uniform on the half circle) the same way.
+struct VariableHardDisksUnscreened : VariableHardDisks {
+  static constexpr bool screen_candidates = false;
+};
+
 /// The mixture of few_particles as disks (run.dimension = 2).
 Scene disk_scene() {
   Scene scene = gas_scene(few_particles);
@@ -140,6 +147,20 @@ TEST(CollisionStage, TheScreenLeavesOutOnlyRejectedCandidates) {
   high_full.run<64, HardSphereUnscreened>(5);
   EXPECT_GT(high.tallies[0].collisions, 10u);
   expect_same_bits(high, high_full);
+}
+
+TEST(CollisionStage, VariableHardDisksKeepTheBitsOverBatchSizesAndTheScreen) {
+  // The isotropic law in the plane (collide/impact_direction.hpp: half_circle_vectors in SIMD, the scalar
+  // half_circle_vector for candidates sharing a particle): batch sizes 1 and 64, screened and not.
+  Gas one(disk_scene()), many(disk_scene()), full(disk_scene());
+  one.run<1, VariableHardDisks>(5);
+  many.run<64, VariableHardDisks>(5);
+  full.run<64, VariableHardDisksUnscreened>(5);
+  for (std::size_t q = 0; q < 4; ++q) EXPECT_GT(one.tallies[q].collisions, 10u);
+  expect_same_bits(one, many);
+  expect_same_bits(many, full);
+  for (const SpeciesStore& store : many.state.species)
+    for (std::size_t k = 0; k < store.size(); ++k) ASSERT_EQ(store.velocity(k).z, 0.0);  // in the plane
 }
 
 TEST(CollisionStage, TheScreenLeavesOutOnlyRejectedCandidatesInALargeGas) {

@@ -27,6 +27,7 @@ namespace {
 struct ConstantRate {
   static constexpr const char* name = "constant-rate";
   static constexpr int dimension = 3;
+  static constexpr ImpactLaw impact_law = ImpactLaw::isotropic;  // e uniform (001 eq. 4)
   static constexpr const char* explanation = "a constant rate, written as a new kernel";
   static constexpr double lambda = 0.0;  // omega ~ |g|^0
   template <class Scene>

@@ -165,7 +165,7 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
   double worst_log = 0.0, worst_normal = 0.0, worst_power = 0.0;
   auto ulps = [](double simd, double scalar) { return std::abs(simd - scalar) / (std::abs(scalar) * 0x1p-52); };
   for (std::uint64_t chunk = 0; chunk < (1u << 14); ++chunk) {
-    std::array<double, lanes> u1, u2, e, z1, z2, x, y, z, p, cx, cy, cz, lx, ly, lz;
+    std::array<double, lanes> u1, u2, e, z1, z2, x, y, z, p, cx, cy, cz, lx, ly, lz, hx, hy, hz;
     for (std::size_t k = 0; k < lanes; ++k) {
       const RandomBlock r = rng.block(RngPurpose::initial_velocity, 0, chunk, k);
       u1[k] = uniform_open(chunk == 0 && k == 0 ? 0u : r[0]);
@@ -181,6 +181,7 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
                  std::span(z));
     unit_circle_vectors(std::span<const double, lanes>(u1), std::span(cx), std::span(cy), std::span(cz));
     lambert_circle_vectors(std::span<const double, lanes>(u1), std::span(lx), std::span(ly), std::span(lz));
+    half_circle_vectors(std::span<const double, lanes>(u1), std::span(hx), std::span(hy), std::span(hz));
     for (std::size_t k = 0; k < lanes; ++k) {
       worst_log = std::max(worst_log, ulps(e[k], -std::log(u1[k])));
       worst_power = std::max(worst_power, ulps(p[k], std::pow(u1[k], 2.5)));
@@ -199,6 +200,11 @@ TEST(Numerics, SimdVariatesMatchTheScalarConversions) {
       ASSERT_EQ(lx[k], l.x);
       ASSERT_EQ(ly[k], l.y);
       ASSERT_EQ(lz[k], l.z);
+      const Vec3 h = half_circle_vector(u1[k]);
+      ASSERT_EQ(hx[k], h.x);
+      ASSERT_EQ(hy[k], h.y);
+      ASSERT_EQ(hz[k], h.z);
+      ASSERT_GE(h.x, 0.0);
     }
   }
   EXPECT_LE(worst_log, 2.0);

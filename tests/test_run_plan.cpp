@@ -25,15 +25,17 @@ struct Kinds {
   bool relaxation;
   const char* storage;
   int species;
+  int dimension = 3;  // run.dimension
 };
 
 std::string scene_text(const Kinds& k) {
   std::string t = "[run]\nmethod = \"dsmc\"\nt_end = 0.05\ndt = 0.01\nsamples = 2\nreplicas = 1\nstorage = \"" +
-                  std::string(k.storage) + "\"\n";
-  // With a packing fraction, the densities that give it with unit diameters (the scene file checks it under shear).
+                  std::string(k.storage) + "\"\ndimension = " + std::to_string(k.dimension) + "\n";
+  // With a packing fraction, the densities that give it with unit diameters (the scene file checks it under shear):
+  // phi = pi n / 6 for spheres, pi n / 4 for disks.
   char density[32];
   std::snprintf(density, sizeof density, "%.17g",
-                k.packing > 0.0 ? 6.0 * k.packing / (std::numbers::pi * k.species) : 0.1);
+                k.packing > 0.0 ? (k.dimension == 3 ? 6.0 : 4.0) * k.packing / (std::numbers::pi * k.species) : 0.1);
   for (int i = 0; i < k.species; ++i)
     t += "[[species]]\nname = \"s" + std::to_string(i) + "\"\nparticles = 64\ndensity = " + density + "\n";
   t += "[collision]\nkernel = \"" + std::string(k.kernel) + "\"\nrestitution = 0.9\n";
@@ -57,32 +59,34 @@ TEST(RunPlan, EveryCombinationRunsOrIsRefusedWithAReason) {
         for (const char* thermostat : {"none", "gaussian", "white-noise"})
           for (bool relaxation : {false, true})
             for (const char* storage : {"double", "float"})
-              for (int species : {1, 2}) {
-                const Kinds k{kernel, shear, packing, thermostat, relaxation, storage, species};
-                const std::string text = scene_text(k);
-                Scene scene;
-                try {
-                  scene = parse_scene(text, "combination.toml");
-                } catch (const SceneError&) {  // e.g. a mixture with the rate form: the scene file refuses it
-                  continue;
+              for (int species : {1, 2})
+                for (int dimension : {3, 2}) {
+                  const Kinds k{kernel, shear, packing, thermostat, relaxation, storage, species, dimension};
+                  const std::string text = scene_text(k);
+                  Scene scene;
+                  try {
+                    scene = parse_scene(text, "combination.toml");
+                  } catch (const SceneError&) {  // e.g. a mixture with the rate form: the scene file refuses it
+                    continue;
+                  }
+                  RunPlan plan;
+                  try {
+                    plan = make_plan(scene);
+                  } catch (const PlanRefusal& e) {
+                    ++refused;
+                    EXPECT_NE(std::string(e.what()).find("cannot run"), std::string::npos) << e.what();
+                    EXPECT_EQ(plan_refusal(scene), e.what());
+                    continue;
+                  }
+                  ++ran;
+                  EXPECT_TRUE(plan_refusal(scene).empty());
+                  const RunResult result = run_plan(plan, scene, {});  // a refused product would throw logic_error
+                  EXPECT_EQ(result.replicas.size(), 1u) << text;
                 }
-                RunPlan plan;
-                try {
-                  plan = make_plan(scene);
-                } catch (const PlanRefusal& e) {
-                  ++refused;
-                  EXPECT_NE(std::string(e.what()).find("cannot run"), std::string::npos) << e.what();
-                  EXPECT_EQ(plan_refusal(scene), e.what());
-                  continue;
-                }
-                ++ran;
-                EXPECT_TRUE(plan_refusal(scene).empty());
-                const RunResult result = run_plan(plan, scene, {});  // a refused product would throw logic_error
-                EXPECT_EQ(result.replicas.size(), 1u) << text;
-              }
-  // Maxwell and VHS: one species only (rate form), no shear, no relaxation.
-  EXPECT_GT(ran, 20);
-  EXPECT_GT(refused, 20);
+  // Maxwell and VHS: one species only (rate form), no shear, no relaxation; disks: no relaxation.
+  EXPECT_GT(ran, 40);
+  EXPECT_GT(refused, 40);
+  std::printf("%d combinations ran, %d were refused\n", ran, refused);
 }
 
 TEST(RunPlan, RefusalsNameWhatIsNotSupported) {
@@ -150,4 +154,11 @@ particles_per_shell = 8
   EXPECT_TRUE(result.replicas[0].weighted.has_value());
   EXPECT_NE(plan_refusal(with_storage("float")).find("[weights] with run.storage = \"float\""), std::string::npos);
   EXPECT_NE(plan_refusal(scene, Spread::particles).find("method other than \"dsmc\""), std::string::npos);
+  Scene disks = scene;
+  disks.run.dimension = 2;
+  EXPECT_NE(plan_refusal(disks).find("[weights] with disks"), std::string::npos);
+  disks.weights.reset();  // the event scheme itself runs disks
+  const RunPlan event = make_plan(disks);
+  EXPECT_EQ(std::get<VariableHardDisks>(std::get<EventPlan>(event.scheme).kernel).lambda, 0.5);
+  EXPECT_EQ(instantiation_name(event, disks), "event<vhs-disk, white-noise>");
 }

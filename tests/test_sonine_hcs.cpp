@@ -1,4 +1,5 @@
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -177,6 +178,15 @@ TEST(WhiteNoiseTemperature, IsThe001EnergyBalanceForHardSpheresAndBalancesTheHea
       const double rate = 0.7, beta = 1.3;
       const double t = granmc::theory::white_noise_temperature(alpha, 4.0 * rate, 1.0, 1.0, 1.0, beta, a2, 3);
       EXPECT_NEAR(t, granmc::theory::white_noise_steady_temperature(1.0, rate, alpha, beta, a2), 1e-12 * t) << alpha;
+    }
+  // Hard disks with n sigma = pi rate are 001's kernel form in the plane (collide/pair_coefficients.cpp), whose
+  // energy balance carries <1 - mu> = 4/3 of the hard-disk law (collide/hard_disk_scattering.hpp).
+  for (double alpha : {0.3, 0.7, 0.95})
+    for (double a2 : {0.0, 0.05}) {
+      const double rate = 0.7, beta = 1.3;
+      const double t =
+          granmc::theory::white_noise_temperature(alpha, std::numbers::pi * rate, 1.0, 1.0, 1.0, beta, a2, 2);
+      EXPECT_NEAR(t, granmc::theory::white_noise_steady_temperature(1.0, rate, alpha, beta, a2, 2), 1e-12 * t) << alpha;
     }
   // Disks, mass 2, chi 1.4: at the steady temperature the cooling zeta T takes the heating 2 beta m.
   const double t = granmc::theory::white_noise_temperature(0.6, 0.8, 1.2, 2.0, 1.4, 0.9, 0.03, 2);

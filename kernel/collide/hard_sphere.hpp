@@ -7,11 +7,11 @@
 //    PairCoefficients. The mean of Theta(g.sigma) (g.sigma) over sigma-hat uniform is |g| / 4 for d = 3 and
 //    |g| / pi for d = 2 (the integral of cos over a half circle, 2, over 2 pi), so the total rate per pair is
 //    pi sigma^2 n chi |g| (spheres) and 2 sigma n chi |g| (disks).
-//  - Event (001 eq. 6, spheres only): B = rate |u|, e uniform; a candidate is kept with probability
-//    |u| / U_max, the test u < |u| / U_max needing no transformation of u.
+//  - Event (001 eq. 6): B = rate |u|, e uniform on the sphere for spheres, the hard-disk law of
+//    collide/hard_disk_scattering.hpp for disks; a candidate is kept with probability |u| / U_max, the test
+//    u < |u| / U_max needing no transformation of u.
 #include <cmath>
 #include <cstddef>
-#include <numbers>
 #include <span>
 
 #include "kernel/collide/collision_kernel.hpp"
@@ -24,6 +24,7 @@ template <int d, bool is_rough = false>
 struct HardCore {
   static_assert(d == 2 || d == 3);
   static constexpr int dimension = d;
+  static constexpr ImpactLaw impact_law = ImpactLaw::hard_core;
   static constexpr bool rough = is_rough;
   static constexpr double lambda = 1.0;
   static constexpr const char* name =
@@ -37,7 +38,7 @@ struct HardCore {
                       : "hard disks: omega_kl = 2 pi sigma_ij n_j chi_ij Theta(g.sigma) (g.sigma) (000 sec. 3 in d = "
                         "2)");
   /// The mean of Theta(g.sigma) (g.sigma) / |g| over sigma-hat uniform on the unit sphere (circle).
-  static constexpr double mean_g_sigma = d == 3 ? 0.25 : std::numbers::inv_pi;
+  static constexpr double mean_g_sigma = mean_angular_weight(d, impact_law);
   template <class Scene>
   static constexpr HardCore from_scene(const Scene&) noexcept {
     return {};
@@ -63,7 +64,7 @@ using HardDisk = HardCore<2>;
 using RoughHardSphere = HardCore<3, true>;
 using RoughHardDisk = HardCore<2, true>;
 
-static_assert(SteppedKernel<HardSphere> && EventKernel<HardSphere> && SteppedKernel<HardDisk>);
+static_assert(SteppedKernel<HardSphere> && EventKernel<HardSphere> && SteppedKernel<HardDisk> && EventKernel<HardDisk>);
 static_assert(SteppedKernel<RoughHardSphere> && SteppedKernel<RoughHardDisk>);
 
 }  // namespace granmc

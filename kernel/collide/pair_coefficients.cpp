@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "kernel/collide/collision_kernel.hpp"
 #include "kernel/collide/enskog_chi.hpp"
 
 namespace granmc {
@@ -32,13 +33,19 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       p.i = i;
       p.j = j;
       // 000: 4 pi sigma_ij^2 n_j chi_ij; for disks 2 pi sigma_ij n_j chi_ij (collide/hard_sphere.hpp). The
-      // kernel form of 001 (collision.rate > 0, one species, spheres): 16 pi rate, whose mean over sigma-hat
-      // gives the total rate 4 pi rate |g|^lambda per pair (collide/maxwell_pseudomolecules.hpp; for hard
-      // spheres n sigma^2 = 4 rate).
-      const double contact =
-          scene.run.dimension == 2 ? 2.0 * std::numbers::pi * sigma_ij : 4.0 * std::numbers::pi * sigma_ij * sigma_ij;
-      p.rate_prefactor =
-          scene.collision.rate > 0.0 ? 16.0 * std::numbers::pi * scene.collision.rate : contact * b.density * chi;
+      // kernel form of 001 (collision.rate > 0, one species): |S^(d-1)| rate over the mean of the kernel's
+      // angular weight, so that the mean over sigma-hat gives the total rate |S^(d-1)| rate |g|^lambda per
+      // pair (collide/maxwell_pseudomolecules.hpp): 16 pi rate for spheres, 2 pi^2 rate for hard disks,
+      // 4 pi rate for Maxwell and VHS disks (for hard spheres n sigma^2 = 4 rate, for hard disks n sigma =
+      // pi rate).
+      const bool disks = scene.run.dimension == 2;
+      const double contact = disks ? 2.0 * std::numbers::pi * sigma_ij : 4.0 * std::numbers::pi * sigma_ij * sigma_ij;
+      const ImpactLaw law =
+          scene.collision.kernel == CollisionKernel::hard_sphere ? ImpactLaw::hard_core : ImpactLaw::isotropic;
+      const double sphere_measure = disks ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi;
+      p.rate_prefactor = scene.collision.rate > 0.0
+                             ? sphere_measure * scene.collision.rate / mean_angular_weight(scene.run.dimension, law)
+                             : contact * b.density * chi;
       p.mu_ji = b.mass / (a.mass + b.mass);
       p.mu_ij = a.mass / (a.mass + b.mass);
       p.one_plus_alpha = 1.0 + alpha;

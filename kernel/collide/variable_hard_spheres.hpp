@@ -1,14 +1,13 @@
 #pragma once
-// Variable hard spheres (001 eq. 8, B = rate |u|^lambda, 0 < lambda < 1), in both forms of
-// collide/collision_kernel.hpp.
+// Variable hard spheres (001 eq. 8, B = rate |u|^lambda, 0 < lambda < 1, e uniform on the sphere; on the
+// circle for d = 2), in both forms of collide/collision_kernel.hpp.
 //  - Event: a candidate is kept with probability (|u| / U_max)^lambda (001 eq. 26), tested as
 //    u^(1 / lambda) < |u| / U_max.
-//  - Time-stepped, in the impact-direction form: omega_kl = prefactor Theta(g.sigma) (g.sigma) |g|^(lambda - 1). As for
-//  Maxwell
-// pseudomolecules (collide/maxwell_pseudomolecules.hpp), the angular weight (g.sigma)/|g| makes the
-// scattering direction uniform, and the mean over sigma-hat, prefactor |g|^lambda / 4, with prefactor =
-// 16 pi rate gives the total rate 4 pi rate |g|^lambda per pair. lambda is the scene's, so this kernel
-// is a value, not only a type.
+//  - Time-stepped, in the impact-direction form: omega_kl = prefactor Theta(g.sigma) (g.sigma / |g|)^(d - 2)
+//    |g|^lambda. As for Maxwell pseudomolecules (collide/maxwell_pseudomolecules.hpp), the isotropic law
+//    makes the scattering direction uniform, and the mean over sigma-hat, prefactor |g|^lambda / 4
+//    (spheres) or / 2 (disks), with prefactor = |S^(d-1)| rate / that mean gives the total rate
+//    |S^(d-1)| rate |g|^lambda per pair. lambda is the scene's, so this kernel is a value, not only a type.
 #include <cmath>
 #include <cstddef>
 #include <span>
@@ -19,26 +18,34 @@
 
 namespace granmc {
 
-struct VariableHardSpheres {
-  static constexpr int dimension = 3;  // spheres only so far
-  static constexpr const char* name = "vhs";
+template <int d>
+struct VhsKernel {
+  static_assert(d == 2 || d == 3);
+  static constexpr int dimension = d;
+  static constexpr ImpactLaw impact_law = ImpactLaw::isotropic;
+  static constexpr const char* name = d == 3 ? "vhs" : "vhs-disk";
   static constexpr const char* explanation =
-      "variable hard spheres in the impact-direction form (16 pi rate (g.sigma) |g|^(lambda - 1))";
+      d == 3 ? "variable hard spheres in the impact-direction form (16 pi rate (g.sigma) |g|^(lambda - 1))"
+             : "variable hard disks in the impact-direction form (4 pi rate Theta(g.sigma) |g|^lambda)";
+  static constexpr double mean_weight = mean_angular_weight(d, impact_law);
   double lambda = 0.5;
 
-  static VariableHardSpheres from_scene(const Scene& scene) noexcept { return {scene.collision.lambda}; }
+  static VhsKernel from_scene(const Scene& scene) noexcept { return {scene.collision.lambda}; }
   [[nodiscard]] double rate(double g_sigma, double g2) const noexcept {
-    return g_sigma * std::pow(g2, 0.5 * (lambda - 1.0));
+    if constexpr (d == 3)
+      return g_sigma * std::pow(g2, 0.5 * (lambda - 1.0));
+    else
+      return std::pow(g2, 0.5 * lambda);
   }
   [[nodiscard]] double bound(double relative_speed) const noexcept { return std::pow(relative_speed, lambda); }
   static constexpr bool screen_candidates = true;
   template <class T>
   [[nodiscard]] T mean_rate(const T& g2) const noexcept {
     using std::pow;  // xsimd's for a batch
-    return 0.25 * pow(g2, T(0.5 * lambda));
+    return mean_weight * pow(g2, T(0.5 * lambda));
   }
   [[nodiscard]] double mean_bound(double relative_speed) const noexcept {
-    return 0.25 * std::pow(relative_speed, lambda);
+    return mean_weight * std::pow(relative_speed, lambda);
   }
 
   static constexpr bool constant_rate = false;
@@ -52,6 +59,10 @@ struct VariableHardSpheres {
   }
 };
 
+using VariableHardSpheres = VhsKernel<3>;
+using VariableHardDisks = VhsKernel<2>;
+
 static_assert(SteppedKernel<VariableHardSpheres> && EventKernel<VariableHardSpheres>);
+static_assert(SteppedKernel<VariableHardDisks> && EventKernel<VariableHardDisks>);
 
 }  // namespace granmc

@@ -163,6 +163,14 @@ inline void unit_circle_vectors(std::span<const double, N> u, std::span<double, 
   }
 }
 
+/// half_circle_vector lane by lane (the same bits, any N): the circle's directions, x folded.
+template <std::size_t N>
+inline void half_circle_vectors(std::span<const double, N> u, std::span<double, N> x, std::span<double, N> y,
+                                std::span<double, N> z) noexcept {
+  unit_circle_vectors(u, x, y, z);
+  for (double& c : x) c = std::abs(c);
+}
+
 /// lambert_circle_vector lane by lane (the same bits, any N).
 template <std::size_t N>
 inline void lambert_circle_vectors(std::span<const double, N> u, std::span<double, N> x, std::span<double, N> y,

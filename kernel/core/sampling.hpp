@@ -45,6 +45,13 @@ inline Vec3 unit_circle_vector(double u) noexcept {
   return {phi.cos, phi.sin, 0.0};
 }
 
+/// Direction (cos theta, sin theta, 0) uniform on the half circle x > 0 from one uniform: the uniform
+/// direction on the circle folded onto x > 0 (the reflection x -> -x keeps the uniform law).
+inline Vec3 half_circle_vector(double u) noexcept {
+  const CosSin phi = turn_sincos(u);
+  return {std::abs(phi.cos), phi.sin, 0.0};
+}
+
 /// Direction (cos theta, sin theta, 0) on the half circle x > 0 with density cos(theta) / 2 in theta
 /// (Lambert's law in the plane) from one uniform: sin(theta) = 2 u - 1 is uniform.
 inline Vec3 lambert_circle_vector(double u) noexcept {

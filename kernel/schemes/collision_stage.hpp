@@ -302,8 +302,8 @@ class BatchedStage {
         const auto b = static_cast<std::uint64_t>(std::countr_zero(held));
         const Drawn& d = chunk_[i];
         // n as the batch would have had it: the same bits as the SIMD impact_variates
-        const Vec3 n =
-            directions_for_all ? Vec3{d.sx[b], d.sy[b], d.sz[b]} : impact_variate<dimension>(d.dir1[b], d.dir2[b]);
+        const Vec3 n = directions_for_all ? Vec3{d.sx[b], d.sy[b], d.sz[b]}
+                                          : impact_variate<dimension, Kernel::impact_law>(d.dir1[b], d.dir2[b]);
         nx_[0] = n.x, ny_[0] = n.y, nz_[0] = n.z;
         test_and_apply(d, b, nx_, ny_, nz_, 0);
       }
@@ -446,8 +446,9 @@ class BatchedStage {
     } else if constexpr (directions_for_all && Shift::active) {  // disks: uniform on the circle
       unit_circle_vectors(std::span<const double, lanes>(d.dir1), std::span(d.sx), std::span(d.sy), std::span(d.sz));
     } else if constexpr (directions_for_all)
-      impact_variates<dimension>(std::span<const double, lanes>(d.dir1), std::span<const double, lanes>(d.dir2),
-                                 std::span(d.sx), std::span(d.sy), std::span(d.sz));
+      impact_variates<dimension, Kernel::impact_law>(std::span<const double, lanes>(d.dir1),
+                                                     std::span<const double, lanes>(d.dir2), std::span(d.sx),
+                                                     std::span(d.sy), std::span(d.sz));
   }
 
   /// The acceptance of a candidate of pair q with rate omega and uniform u (000 sec. 3, step 2): when
@@ -620,9 +621,10 @@ class BatchedStage {
   /// (the same bits as impact_direction, so the square roots and divisions of successive collisions no longer
   /// wait on each other), and only its acceptance is left for its turn. Returns how many passed.
   std::size_t impact_directions(const Drawn& d, std::uint64_t full_test) noexcept {
-    const std::size_t passed = selected_directions(
-        full_test, d.dir1, d.dir2, which_, nx_, ny_, nz_,
-        [](auto u1, auto u2, auto x, auto y, auto z) { impact_variates<dimension>(u1, u2, x, y, z); });
+    const std::size_t passed = selected_directions(full_test, d.dir1, d.dir2, which_, nx_, ny_, nz_,
+                                                   [](auto u1, auto u2, auto x, auto y, auto z) {
+                                                     impact_variates<dimension, Kernel::impact_law>(u1, u2, x, y, z);
+                                                   });
     for (std::size_t e = 0; e < passed; ++e) {
       const Vec3 g = d.pk[which_[e]].velocity() - d.pl[which_[e]].velocity();
       gx_[e] = g.x, gy_[e] = g.y, gz_[e] = g.z, g_square_[e] = g2_[which_[e]];

@@ -10,6 +10,10 @@
 // the candidate is real with probability (|v_i - v_j| / U_max)^lambda (001 eq. 26) and then collides by
 // 001 eq. (4). At each sample time every particle is brought to that time (001 Remark 2).
 //
+// Disks (Kernel::dimension = 2): the same in the plane z = 0, with |S^1| = 2 pi in place of |S^2| = 4 pi
+// (pi_hat = pi rate (n - 1) U_max^lambda), xi in the plane, and e uniform on the circle, or by the hard-disk
+// law (collide/hard_disk_scattering.hpp) for hard disks.
+//
 // The majorant, and what this code does differently from the paper's listing (docs/physics.md):
 //  - U_max bounds |v_i - v_j| by |v_i - V| + |v_j - V| for a fixed reference velocity V, so the raise of
 //    steps 2.7 and 2.10 is U_max = max(U_max, 2 |v_i - V|, 2 |v_j - V|); the printed listing omits the 2.
@@ -32,6 +36,7 @@
 #include <utility>
 
 #include "kernel/collide/collision_kernel.hpp"
+#include "kernel/collide/hard_disk_scattering.hpp"
 #include "kernel/collide/isotropic_scattering.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
@@ -68,6 +73,9 @@ template <class Real, EventKernel Kernel, bool in_registers = true>
 class BasicEventScheme {
   using Store = BasicSpeciesStore<Real>;
   using State = BasicGasState<Real>;
+  static constexpr bool disks = Kernel::dimension == 2;
+  /// Hard disks: e from u and s = sin(theta) at the collision (the draw keeps s in ex).
+  static constexpr bool disk_law = disks && Kernel::impact_law == ImpactLaw::hard_core;
 
  public:
   /// From the scene's initial Maxwellian.
@@ -85,9 +93,10 @@ class BasicEventScheme {
     if (particles_ < 2) throw std::invalid_argument("the event scheme needs at least two particles");
     const double u = state_.scale.u();
     noise_ = 2.0 * scene.thermostat.beta / (u * u);  // 2 beta in stored units per unit time
-    // pi_hat = 2 pi rate (n - 1) (u U_max)^lambda  (001 eq. 25; U_max here in stored units)
-    rate_prefactor_ = 2.0 * std::numbers::pi * scene.collision.rate * static_cast<double>(particles_ - 1) *
-                      std::pow(u, kernel_.lambda);
+    // pi_hat = |S^(d-1)| / 2 rate (n - 1) (u U_max)^lambda: 2 pi for spheres (001 eq. 25; U_max here in
+    // stored units), pi for disks
+    rate_prefactor_ = (disks ? 1.0 : 2.0) * std::numbers::pi * scene.collision.rate *
+                      static_cast<double>(particles_ - 1) * std::pow(u, kernel_.lambda);
     candidate_rate_ = rate_prefactor_;  // Maxwell: U_max^0 = 1, and no majorant is kept
     reset_majorant();
     prepare(batches_[0], 0);
@@ -183,7 +192,7 @@ class BasicEventScheme {
     std::array<std::size_t, batch_size> i{}, j{};
     std::array<double, batch_size> wait{};            // -log u of step 2.1: the waiting time is wait / rate
     std::array<double, batch_size> threshold{};       // step 2.8: real iff threshold < |v_i - v_j| / U_max
-    std::array<double, batch_size> ex{}, ey{}, ez{};  // e of step 2.9
+    std::array<double, batch_size> ex{}, ey{}, ez{};  // e of step 2.9 (hard disks: s in ex)
     // Draw k's normals: pairs k, batch_size + k and 2 batch_size + k, so that the same component of
     // consecutive draws is contiguous (candidates_in_simd loads them a register at a time)
     std::array<double, 3 * batch_size> normal1{}, normal2{};
@@ -243,11 +252,23 @@ class BasicEventScheme {
     }
     negative_log_in_place(std::span(batch.wait));
     kernel_.acceptance_thresholds(std::span(batch.threshold));
-    unit_vectors(std::span<const double, batch_size>(e1), std::span<const double, batch_size>(e2), std::span(batch.ex),
-                 std::span(batch.ey), std::span(batch.ez));
-    if (noise_ != 0.0)
+    if constexpr (disk_law) {
+      for (std::size_t k = 0; k < b; ++k) batch.ex[k] = 2.0 * e1[k] - 1.0;  // s = sin(theta), uniform
+    } else if constexpr (disks) {
+      unit_circle_vectors(std::span<const double, b>(e1), std::span(batch.ex), std::span(batch.ey),
+                          std::span(batch.ez));
+    } else {
+      unit_vectors(std::span<const double, b>(e1), std::span<const double, b>(e2), std::span(batch.ex),
+                   std::span(batch.ey), std::span(batch.ez));
+    }
+    if (noise_ != 0.0) {
       standard_normal_pairs(std::span<const double, 3 * batch_size>(u1), std::span<const double, 3 * batch_size>(u2),
                             std::span(batch.normal1), std::span(batch.normal2));
+      if constexpr (disks) {  // no kick along z: the z normals of i and j (see `candidate`) are 0
+        std::fill_n(&batch.normal1[b], b, 0.0);
+        std::fill_n(&batch.normal2[2 * b], b, 0.0);
+      }
+    }
   }
 
   /// The records of the pair of slot k of a prepared batch, into the cache before they are needed. Each
@@ -288,7 +309,9 @@ class BasicEventScheme {
   /// time (the last batch computes normals past the end and drops them).
   void bring_all_to(Store& store, double t) const noexcept {
     for_each_particle_normal<64>(rng_, RngPurpose::brownian_sync, 0, syncs_, 0, particles_,
-                                 [&](std::size_t k, const Vec3& xi) { brownian_update(store, k, t, xi); });
+                                 [&](std::size_t k, const Vec3& xi) {
+                                   brownian_update(store, k, t, disks ? Vec3{xi.x, xi.y, 0.0} : xi);
+                                 });
     store.restart_clock(t);
   }
 
@@ -367,7 +390,7 @@ class BasicEventScheme {
       for (; collide != 0; collide &= collide - 1) {
         const std::size_t l = static_cast<std::size_t>(std::countr_zero(collide));
         Vec3 vi{ax[l], ay[l], az[l]}, vj{bx[l], by[l], bz[l]};
-        isotropic_scattering(vi, vj, {batch.ex[k + l], batch.ey[k + l], batch.ez[k + l]}, alpha_);  // step 2.9
+        scatter(vi, vj, batch, k + l);  // step 2.9
         vi = Store::as_stored(vi);
         vj = Store::as_stored(vj);
         ax[l] = vi.x, ay[l] = vi.y, az[l] = vi.z;
@@ -416,12 +439,22 @@ class BasicEventScheme {
           break;
       }
     }
-    isotropic_scattering(vi, vj, {batch.ex[k], batch.ey[k], batch.ez[k]}, alpha_);  // step 2.9
+    scatter(vi, vj, batch, k);  // step 2.9
     store.set_velocity(i, vi);
     store.set_velocity(j, vj);
     ++tally_.collisions;
     // step 2.10, on the velocities as stored (rounded, with float storage), which later candidates read
     if constexpr (!Kernel::constant_rate) raise_majorant(store.velocity(i), store.velocity(j));
+  }
+
+  /// Step 2.9 with slot k's e (001 eq. 4), for hard disks e by their law from s.
+  void scatter(Vec3& vi, Vec3& vj, const DrawBatch& batch, std::size_t k) const noexcept {
+    if constexpr (disk_law) {
+      const Vec3 u = vi - vj;
+      isotropic_scattering(vi, vj, hard_disk_scattering_direction(u, norm(u), batch.ex[k]), alpha_);
+    } else {
+      isotropic_scattering(vi, vj, {batch.ex[k], batch.ey[k], batch.ez[k]}, alpha_);
+    }
   }
 
   /// Steps 2.7 and 2.10: U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|); whether it rose. The square

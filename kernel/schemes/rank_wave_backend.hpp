@@ -365,8 +365,8 @@ class RankWaveBackend {
       return 0.0;
     }
     constexpr int dim = Kernel::dimension;
-    const ImpactDirection d =
-        impact_direction<dim>(g, std::sqrt(g2), impact_variate<dim>(uniform_open(w[0]), uniform_open(w[1])));
+    const ImpactDirection d = impact_direction<dim>(
+        g, std::sqrt(g2), impact_variate<dim, Kernel::impact_law>(uniform_open(w[0]), uniform_open(w[1])));
     if (!(d.g_sigma > 0.0)) return 0.0;
     inelastic_collision(vk, vl, d.sigma, d.g_sigma, pair);
     counts[0] += 1.0;

@@ -43,8 +43,14 @@ double expected_max_speed(double particles) {
 ///    majorant is kept, 1.4 times faster (Example 7: 2.00e10 in 433 s and 494 s);
 ///  - time-stepped DSMC, cooling state at alpha = 0.8: `make hcs-alpha08` (16 x 10^5 particles, 1.45e8
 ///    candidates in 0.93-1.14 s) and the same scene with 2 x 10^7 particles to t = 2 (5.6e8 in 10-12 s).
+/// Whether every candidate collides (Maxwell's kernel, any dimension).
+template <class Choice>
+bool constant_rate(const Choice& kernel) {
+  return std::visit([](const auto& k) { return std::decay_t<decltype(k)>::constant_rate; }, kernel);
+}
+
 double event_candidates_per_second(const EventPlan& plan, bool beyond_caches) {
-  const double maxwell = std::holds_alternative<MaxwellPseudomolecules>(plan.kernel) ? 1.4 : 1.0;
+  const double maxwell = constant_rate(plan.kernel) ? 1.4 : 1.0;
   if (!beyond_caches) return maxwell * 2.7e7;
   return maxwell * (std::holds_alternative<StoredAs<float>>(plan.storage) ? 1.77e7 : 1.40e7);
 }
@@ -54,9 +60,7 @@ double event_candidates_per_second(const EventPlan& plan, bool beyond_caches) {
 /// Maxwell's kernel (t_end = 2.5, 6.2e6 candidates in 2.3 s), 2.5e6 with hard spheres (t_end = 0.5, 9.5e7
 /// in 19 s), where more candidates are fictitious.
 constexpr std::size_t weighted_bytes_per_particle = 3 * 8 + 8 + 8 + 4 + 4 + 4;
-double weighted_candidates_per_second(const WeightedPlan& plan) {
-  return std::holds_alternative<MaxwellPseudomolecules>(plan.kernel) ? 1.4e6 : 2.5e6;
-}
+double weighted_candidates_per_second(const WeightedPlan& plan) { return constant_rate(plan.kernel) ? 1.4e6 : 2.5e6; }
 double stepped_candidates_per_second(bool beyond_caches) { return beyond_caches ? 2.5e7 : 6.6e7; }
 
 void explain_gas_memory(const Scene& scene, PlanExplanation& out) {
@@ -69,30 +73,33 @@ bool beyond_caches(const Scene& scene) {
   return static_cast<double>(total_particles(scene)) * static_cast<double>(stored_bytes_per_particle(scene)) > 100e6;
 }
 
-/// The time-step-free scheme (001 sec. 4): candidates at pi_hat = 2 pi rate (n - 1) U_max^lambda, U_max
-/// estimated as 2 x the expected largest speed at the larger of T(0) and the steady temperature.
+/// The time-step-free scheme (001 sec. 4): candidates at pi_hat = |S^(d-1)| / 2 rate (n - 1) U_max^lambda
+/// (2 pi for spheres, pi for disks), U_max estimated as 2 x the expected largest speed at the larger of T(0)
+/// and the steady temperature.
 void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
   const CollisionConfig& c = scene.collision;
-  char kernel[96];
-  std::snprintf(kernel, sizeof kernel,
-                "one species, kernel rate |u|^lambda with lambda = %g, e uniform (001 eqs. 4, 8)", c.lambda);
+  char kernel[128];
+  const bool disks = scene.run.dimension == 2;
+  std::snprintf(kernel, sizeof kernel, "one species%s, kernel rate |u|^lambda with lambda = %g, %s",
+                disks ? " of disks" : "", c.lambda,
+                disks && c.lambda == 1.0 ? "e by the hard-disk law" : "e uniform (001 eqs. 4, 8)");
   out.effects.push_back(kernel);
   if (plan.white_noise)
     out.effects.push_back("white noise by lazy Brownian updates at collision and sample times (001 eq. 23)");
   else
     out.absent.push_back("white noise");
-  out.effects.push_back(std::holds_alternative<MaxwellPseudomolecules>(plan.kernel)
-                            ? "every candidate collides (Maxwell kernel: no majorant)"
-                            : "constant majorant U_max, raised at candidates, reset at samples");
+  out.effects.push_back(constant_rate(plan.kernel) ? "every candidate collides (Maxwell kernel: no majorant)"
+                                                   : "constant majorant U_max, raised at candidates, reset at samples");
   explain_gas_memory(scene, out);
   const double n = static_cast<double>(scene.species[0].particles);
   double temperature = scene.initial_temperature;
   if (plan.white_noise)
-    temperature = std::max(temperature, theory::white_noise_steady_temperature(c.lambda, c.rate, c.restitution[0][0],
-                                                                               scene.thermostat.beta, 0.0));
+    temperature =
+        std::max(temperature, theory::white_noise_steady_temperature(c.lambda, c.rate, c.restitution[0][0],
+                                                                     scene.thermostat.beta, 0.0, scene.run.dimension));
   const double majorant = 2.0 * expected_max_speed(n) * std::sqrt(temperature);
-  out.candidates =
-      scene.run.replicas * scene.run.t_end * 2.0 * std::numbers::pi * c.rate * (n - 1.0) * std::pow(majorant, c.lambda);
+  out.candidates = scene.run.replicas * scene.run.t_end * (disks ? 1.0 : 2.0) * std::numbers::pi * c.rate * (n - 1.0) *
+                   std::pow(majorant, c.lambda);
   out.candidates_upper_bound = false;
   out.candidates_per_second = event_candidates_per_second(plan, beyond_caches(scene));
 }
@@ -169,9 +176,11 @@ void explain(const SteppedPlan& plan, const Scene& scene, PlanExplanation& out) 
     out.candidates_upper_bound = false;
   }
   const double u0 = std::sqrt(scene.initial_temperature);
-  // The majorant bounds the mean of omega_kl over sigma-hat, a quarter of omega_kl's bound (1/pi for disks),
-  // except with the Enskog shear shift (schemes/collision_stage.hpp, majorant_bound).
-  const double mean_form = shift ? 1.0 : scene.run.dimension == 2 ? HardDisk::mean_g_sigma : HardSphere::mean_g_sigma;
+  // The majorant bounds the mean of omega_kl over sigma-hat, the kernel's mean angular weight times omega_kl's
+  // bound (collide/collision_kernel.hpp), except with the Enskog shear shift (schemes/collision_stage.hpp,
+  // majorant_bound).
+  const double mean_form =
+      shift ? 1.0 : std::visit([](const auto& k) { return k.mean_bound(1.0) / k.bound(1.0); }, plan.kernel);
   for (const PairCoefficients& p : pair_coefficients(scene)) {
     const SpeciesConfig& a = scene.species[p.i];
     const SpeciesConfig& b = scene.species[p.j];
@@ -181,9 +190,9 @@ void explain(const SteppedPlan& plan, const Scene& scene, PlanExplanation& out) 
     out.candidates += std::visit(
         [&](const auto& kernel) {
           using K = std::decay_t<decltype(kernel)>;
-          if constexpr (std::is_same_v<K, MaxwellPseudomolecules>)  // omega_max = prefactor, whatever T
+          if constexpr (K::constant_rate)  // Maxwell: omega_max = prefactor, whatever T
             return half_n * p.rate_prefactor * scene.run.t_end;
-          else if constexpr (std::is_same_v<K, VariableHardSpheres>)  // omega_max = prefactor U^lambda, T at T(0)
+          else if constexpr (std::is_same_v<K, VhsKernel<K::dimension>>)  // omega_max = prefactor U^lambda, T at T(0)
             return half_n * p.rate_prefactor * std::pow((max_a + max_b) * u0, kernel.lambda) * scene.run.t_end;
           else
             return half_n * p.rate_prefactor * (max_a + max_b) * u0 * u_time;

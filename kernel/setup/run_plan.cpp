@@ -22,9 +22,9 @@ constexpr const char* supported_list =
     "\"white-noise\", packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of "
     "dimension 1 or 2 (the needle) in a \"gaussian\" or \"power-law\" bath; "
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
-    "every gas scene; hard disks (run.dimension = 2) with method = \"dsmc\", one or two species (with a "
-    "packing_fraction: Henderson's chi, Jenkins and Mancini's chi_ij), thermostat \"none\", \"gaussian\" or "
-    "\"white-noise\", shear as for spheres, no relaxation; rough spheres or disks (collision.tangential_restitution > "
+    "every gas scene; disks (run.dimension = 2) as spheres but for the relaxation term, the weights and "
+    "the spread over ranks (with a packing_fraction: Henderson's chi, Jenkins and Mancini's chi_ij); rough spheres or "
+    "disks (collision.tangential_restitution > "
     "-1) with method = \"dsmc\", one species, "
     "thermostat \"none\", \"gaussian\" (scaling velocities and spins alike) or \"white-noise\" (on translation, or "
     "a share on the spins), no shear";
@@ -64,6 +64,15 @@ SchemeChoice intruder_plan(const Scene& scene) {
   return IntruderDsmcPlan{bath_choice(in)};
 }
 
+/// The event scheme's kernel in d dimensions: it follows lambda (the scene file fixes it for "maxwell" and
+/// "hard-sphere").
+template <int d, class Choice>
+Choice kernel_of_lambda(const CollisionConfig& c) {
+  if (c.lambda == 0.0) return MaxwellKernel<d>{};
+  if (c.lambda == 1.0) return HardCore<d>{};
+  return VhsKernel<d>{c.lambda};
+}
+
 EventPlan event_plan(const Scene& scene) {
   const CollisionConfig& c = scene.collision;
   if (scene.species.size() != 1) refuse("the event scheme with other than one [[species]]");
@@ -73,19 +82,18 @@ EventPlan event_plan(const Scene& scene) {
   if (c.packing_fraction > 0.0) refuse("the event scheme with a packing_fraction (Enskog)");
   if (scene.shear_rate != 0.0) refuse("the event scheme with a [shear] rate");
   if (scene.relaxation) refuse("the event scheme with the [relaxation] term");
-  // The kernel follows lambda (the scene file fixes it for "maxwell" and "hard-sphere").
-  EventKernelChoice kernel = VariableHardSpheres{c.lambda};
-  if (c.lambda == 0.0) kernel = MaxwellPseudomolecules{};
-  if (c.lambda == 1.0) kernel = HardSphere{};
+  const EventKernelChoice kernel =
+      scene.run.dimension == 2 ? kernel_of_lambda<2, EventKernelChoice>(c) : kernel_of_lambda<3, EventKernelChoice>(c);
   return {kernel, storage_choice(scene), scene.thermostat.kind == ThermostatKind::white_noise};
 }
 
 KernelChoice stepped_kernel(const Scene& scene) {
   switch (scene.collision.kernel) {
     case CollisionKernel::maxwell:
-      return MaxwellPseudomolecules{};
+      return scene.run.dimension == 2 ? KernelChoice{MaxwellDisks{}} : KernelChoice{MaxwellPseudomolecules{}};
     case CollisionKernel::vhs:
-      return VariableHardSpheres{scene.collision.lambda};
+      return scene.run.dimension == 2 ? KernelChoice{VariableHardDisks{scene.collision.lambda}}
+                                      : KernelChoice{VariableHardSpheres{scene.collision.lambda}};
     case CollisionKernel::hard_sphere:
       break;
   }
@@ -129,9 +137,6 @@ SteppedPlan stepped_plan(const Scene& scene, Spread spread) {
   if (scene.species.empty() || scene.species.size() > 2) refuse("a scene without one or two [[species]]");
   if (scene.relaxation && (scene.species.size() != 1 || !scene.thermostat.zeta_is_cooling_rate))
     refuse(relaxation_refusal);
-  if (scene.run.dimension == 2 &&
-      (scene.collision.kernel != CollisionKernel::hard_sphere || scene.collision.rate > 0.0))
-    refuse("a gas of disks (run.dimension = 2) other than hard disks with collision.rate = 0");
   SteppedPlan plan{stepped_kernel(scene), shear_effects(scene), thermostat_effects(scene), storage_choice(scene),
                    BatchedStage{}};
   std::visit(
@@ -177,12 +182,12 @@ RunPlan make_plan(const Scene& scene, Spread spread) {
     return {scheme, spread};
   }
   if (scene.run.method == Method::event) {
-    if (scene.run.dimension == 2) refuse("the event scheme with disks (run.dimension = 2)");
     EventPlan event = event_plan(scene);
     if (spread == Spread::particles) refuse_spread("a method other than \"dsmc\"");
     if (!scene.weights) return {event, spread};
     if (scene.run.storage != Storage::double_precision) refuse("[weights] with run.storage = \"float\"");
-    return {WeightedPlan{event.kernel, event.white_noise}, spread};
+    if (scene.run.dimension == 2) refuse("[weights] with disks (run.dimension = 2)");
+    return {WeightedPlan{kernel_of_lambda<3, WeightedKernelChoice>(scene.collision), event.white_noise}, spread};
   }
   return {stepped_plan(scene, spread), spread};
 }

@@ -5,47 +5,56 @@
 
 namespace granmc::theory {
 
-double maxwell_relaxation_rate(double rate, double alpha) noexcept {
-  return std::numbers::pi * rate * (1.0 - alpha * alpha);  // 001 eq. (16) with gamma C_0 = rate
+double maxwell_relaxation_rate(double rate, double alpha, int dimension) noexcept {
+  // 001 eq. (16) with gamma C_0 = rate; |S^1| / 4 = pi / 2 for disks
+  return (dimension == 3 ? 1.0 : 0.5) * std::numbers::pi * rate * (1.0 - alpha * alpha);
 }
 
-double maxwell_temperature(double t, double temperature0, double beta, double rate, double alpha) noexcept {
-  const double kappa = maxwell_relaxation_rate(rate, alpha);
+double maxwell_temperature(double t, double temperature0, double beta, double rate, double alpha,
+                           int dimension) noexcept {
+  const double kappa = maxwell_relaxation_rate(rate, alpha, dimension);
   const double decay = std::exp(-kappa * t);
   return temperature0 * decay - 2.0 * beta / kappa * std::expm1(-kappa * t);  // 001 eqs. (16-17)
 }
 
 double maxwell_temperature_particles(double t, double temperature0, double beta, double rate, double alpha,
-                                     double particles) noexcept {
-  return (1.0 - 1.0 / particles) * maxwell_temperature(t, temperature0, beta, rate, alpha);
+                                     double particles, int dimension) noexcept {
+  return (1.0 - 1.0 / particles) * maxwell_temperature(t, temperature0, beta, rate, alpha, dimension);
 }
 
 double maxwell_temperature_uncentred(double t, double temperature0, double beta, double rate, double alpha,
-                                     double particles, double mass, bool zero_momentum) noexcept {
+                                     double particles, double mass, bool zero_momentum, int dimension) noexcept {
   const double bulk = (zero_momentum ? 0.0 : temperature0) + 2.0 * mass * beta * t;
-  return maxwell_temperature_particles(t, temperature0, beta, rate, alpha, particles) + bulk / particles;
+  return maxwell_temperature_particles(t, temperature0, beta, rate, alpha, particles, dimension) + bulk / particles;
 }
 
 double maxwell_temperature_splitting(double t, double dt, double temperature0, double beta, double rate, double alpha,
-                                     double particles) noexcept {
-  const double kappa = maxwell_relaxation_rate(rate, alpha);
+                                     double particles, int dimension) noexcept {
+  const double kappa = maxwell_relaxation_rate(rate, alpha, dimension);
   const double steady = beta == 0.0 ? 0.0 : -2.0 * beta * dt / std::expm1(-kappa * dt);
   return (1.0 - 1.0 / particles) * (steady + (temperature0 - steady) * std::exp(-kappa * t));
 }
 
-double maxwell_white_noise_a2(double alpha) noexcept {
-  const double a = alpha;
-  return 2.0 * (1.0 - a) * (1.0 - a) * (1.0 + a) / (13.0 - 9.0 * a + a * a - a * a * a);
+double maxwell_white_noise_a2(double alpha, int dimension) noexcept {
+  const double a = alpha, d = dimension, k = d + 1.0;
+  return 2.0 * k * (1.0 - a) * (1.0 - a) * (1.0 + a) /
+         (19.0 * d - 5.0 - (11.0 * d + 3.0) * a + k * a * a - k * a * a * a);
 }
 
-double maxwellian_relative_speed_moment(double p, double temperature) noexcept {
-  return std::pow(4.0 * temperature, 0.5 * p) * std::tgamma(0.5 * (3.0 + p)) / std::tgamma(1.5);
+double maxwellian_relative_speed_moment(double p, double temperature, int dimension) noexcept {
+  const double d = dimension;
+  return std::pow(4.0 * temperature, 0.5 * p) * std::tgamma(0.5 * (d + p)) / std::tgamma(0.5 * d);
 }
 
-double white_noise_steady_temperature(double lambda, double rate, double alpha, double beta, double a2) noexcept {
-  // 2 beta = (1 - alpha^2)/24 4 pi rate <|u|^{2 + lambda}>, <|u|^{2+lambda}> = c T^{1 + lambda/2}.
-  const double c = maxwellian_relative_speed_moment(2.0 + lambda, 1.0) * (lambda == 1.0 ? 1.0 + 3.0 * a2 / 16.0 : 1.0);
-  const double loss = (1.0 - alpha * alpha) / 24.0 * 4.0 * std::numbers::pi * rate * c;
+double white_noise_steady_temperature(double lambda, double rate, double alpha, double beta, double a2,
+                                      int dimension) noexcept {
+  // 2 beta = |S^(d-1)| rate (1 - alpha^2) <1 - mu> <|u|^{2 + lambda}> / (8 d), <|u|^{2+lambda}> = c T^{1 + lambda/2}
+  const bool hard_core = lambda == 1.0;
+  const double c =
+      maxwellian_relative_speed_moment(2.0 + lambda, 1.0, dimension) * (hard_core ? 1.0 + 3.0 * a2 / 16.0 : 1.0);
+  const double sphere = dimension == 3 ? 4.0 * std::numbers::pi : 2.0 * std::numbers::pi;  // |S^(d-1)|
+  const double one_minus_mu = dimension == 2 && hard_core ? 4.0 / 3.0 : 1.0;
+  const double loss = (1.0 - alpha * alpha) * one_minus_mu / (8.0 * dimension) * sphere * rate * c;
   return std::pow(2.0 * beta / loss, 1.0 / (1.0 + 0.5 * lambda));
 }
 

@@ -1,29 +1,34 @@
 #pragma once
 // Theory of the uniformly heated gas of 001 (df/dt - beta Lap_v f = gamma Q_alpha(f), unit mass) with the
-// kernel B = rate |u|^lambda, rate = gamma C_lambda, e uniform on the sphere. Derivations: docs/physics.md.
+// kernel B = rate |u|^lambda, rate = gamma C_lambda, e uniform on the sphere, in d = 3 or, with e uniform on
+// the circle, d = 2 (hard disks scatter by their own law instead, collide/hard_disk_scattering.hpp). Every
+// pair collides at |S^(d-1)| rate |u|^lambda: 4 pi rate |u|^lambda for spheres, 2 pi for disks.
+// Derivations: docs/physics.md.
 
 namespace granmc::theory {
 
-/// Decay rate of T for Maxwell pseudomolecules: kappa = pi rate (1 - alpha^2) (001 eq. 16, gamma C_0 = rate).
-double maxwell_relaxation_rate(double rate, double alpha) noexcept;
+/// Decay rate of T for Maxwell pseudomolecules: kappa = |S^(d-1)| rate (1 - alpha^2) / 4, pi rate (1 - alpha^2)
+/// for spheres (001 eq. 16, gamma C_0 = rate), pi/2 rate (1 - alpha^2) for disks.
+double maxwell_relaxation_rate(double rate, double alpha, int dimension = 3) noexcept;
 
 /// Exact Maxwell relaxation (001 eqs. 16-17): T(t) = T0 e^{-kappa t} + T_inf (1 - e^{-kappa t}),
 /// T_inf = 2 beta / kappa.
-double maxwell_temperature(double t, double temperature0, double beta, double rate, double alpha) noexcept;
+double maxwell_temperature(double t, double temperature0, double beta, double rate, double alpha,
+                           int dimension = 3) noexcept;
 
 /// The expected bulk-subtracted temperature of the n-particle system of 001 sec. 4 with a Maxwell kernel:
 /// exactly (1 - 1/n) T(t), with T(t) the Boltzmann solution above (docs/physics.md derives it; the
 /// noise feeds the bulk velocity a share 1/n of the heating, and the initial sample loses 1/n to its mean).
 double maxwell_temperature_particles(double t, double temperature0, double beta, double rate, double alpha,
-                                     double particles) noexcept;
+                                     double particles, int dimension = 3) noexcept;
 
-/// The expected temperature of the same system without removing the bulk velocity V, (1/3) m <|v|^2>
-/// (001's estimator, eq. 35): (1 - 1/n) T(t) + m |V|^2 / 3 with E[m |V(t)|^2 / 3] = (T(0) + 2 m beta t) / n
+/// The expected temperature of the same system without removing the bulk velocity V, (1/d) m <|v|^2>
+/// (001's estimator, eq. 35): (1 - 1/n) T(t) + m |V|^2 / d with E[m |V(t)|^2 / d] = (T(0) + 2 m beta t) / n
 /// when the initial sample keeps its mean (001 step 1.2; zero_momentum false) and 2 m beta t / n when it
 /// is removed: collisions keep V, and the noise moves it as the mean of n independent Brownian paths
 /// (docs/physics.md, "001's temperature estimator").
 double maxwell_temperature_uncentred(double t, double temperature0, double beta, double rate, double alpha,
-                                     double particles, double mass, bool zero_momentum) noexcept;
+                                     double particles, double mass, bool zero_momentum, int dimension = 3) noexcept;
 
 /// The same with the time-stepped scheme's first-order splitting (collisions, then the noise of the whole
 /// step, effects/white_noise.hpp), at t = k dt: T_{k+1} = e^{-kappa dt} T_k + 2 beta dt, i.e.
@@ -32,21 +37,28 @@ double maxwell_temperature_uncentred(double t, double temperature0, double beta,
 /// e^{-kappa dt} is the limit of many particles: with M whole collisions per step the exact factor is
 /// (1 - (1 - alpha^2) / (2 (n - 1)))^M, the same to O(1/n) (tests/test_white_noise.cpp).
 double maxwell_temperature_splitting(double t, double dt, double temperature0, double beta, double rate, double alpha,
-                                     double particles) noexcept;
+                                     double particles, int dimension = 3) noexcept;
 
-/// The exact steady a2 of Maxwell pseudomolecules heated by white noise (docs/derivations/maxwell-white-noise-a2.md):
-/// a2 = 2 (1 - alpha)^2 (1 + alpha) / (13 - 9 alpha + alpha^2 - alpha^3), independent of rate and beta
-/// (alpha = 1/2: 2/23 = 0.0870).
-double maxwell_white_noise_a2(double alpha) noexcept;
+/// The exact steady a2 of Maxwell pseudomolecules heated by white noise in d dimensions
+/// (docs/derivations/maxwell-white-noise-a2.md):
+///   a2 = 2 (d + 1) (1 - alpha)^2 (1 + alpha) / (19 d - 5 - (11 d + 3) alpha + (d + 1) (alpha^2 - alpha^3)),
+/// independent of rate and beta: 2 (1 - alpha)^2 (1 + alpha) / (13 - 9 alpha + alpha^2 - alpha^3) for spheres
+/// (alpha = 1/2: 2/23 = 0.0870), 6 (1 - alpha)^2 (1 + alpha) / (33 - 25 alpha + 3 alpha^2 - 3 alpha^3) for disks
+/// (alpha = 1/2: 18/167 = 0.1078).
+double maxwell_white_noise_a2(double alpha, int dimension = 3) noexcept;
 
-/// <|u|^p> over pairs of independent Maxwellian unit-mass particles at temperature T:
-/// (4 T)^{p/2} Gamma((3 + p)/2) / Gamma(3/2).
-double maxwellian_relative_speed_moment(double p, double temperature) noexcept;
+/// <|u|^p> over pairs of independent Maxwellian unit-mass particles at temperature T in d dimensions:
+/// (4 T)^{p/2} Gamma((d + p)/2) / Gamma(d/2).
+double maxwellian_relative_speed_moment(double p, double temperature, int dimension = 3) noexcept;
 
-/// Steady white-noise temperature from the energy balance 2 beta = (1 - alpha^2)/24 4 pi rate <|u|^{2+lambda}>
-/// (001 eq. 15) with a Maxwellian closure, times the first-Sonine factor (1 + 3 a2 / 16) for hard spheres
-/// (lambda = 1; pass a2 = 0 for the closure alone). Exact for lambda = 0 (2 beta / kappa).
-double white_noise_steady_temperature(double lambda, double rate, double alpha, double beta, double a2) noexcept;
+/// Steady white-noise temperature from the energy balance
+///   2 beta = |S^(d-1)| rate (1 - alpha^2) <1 - mu> <|u|^{2+lambda}> / (8 d)
+/// (001 eq. 15 for d = 3: (1 - alpha^2)/24 4 pi rate <|u|^{2+lambda}>), <1 - mu> = 1 for e uniform and 4/3 for
+/// hard disks (collide/hard_disk_scattering.hpp), with a Maxwellian closure, times the first-Sonine factor
+/// (1 + 3 a2 / 16) for hard cores (lambda = 1; pass a2 = 0 for the closure alone). Exact for lambda = 0
+/// (2 beta / kappa).
+double white_noise_steady_temperature(double lambda, double rate, double alpha, double beta, double a2,
+                                      int dimension = 3) noexcept;
 
 /// High-velocity tail exponent b of f ~ exp(-a |v|^b) (001 eqs. 19-21): b = 1 + lambda / 2.
 double tail_exponent(double lambda) noexcept;
