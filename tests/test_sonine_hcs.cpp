@@ -180,7 +180,7 @@ TEST(WhiteNoiseTemperature, IsThe001EnergyBalanceForHardSpheresAndBalancesTheHea
       EXPECT_NEAR(t, granmc::theory::white_noise_steady_temperature(1.0, rate, alpha, beta, a2), 1e-12 * t) << alpha;
     }
   // Hard disks with n sigma = pi rate are 001's kernel form in the plane (collide/pair_coefficients.cpp), whose
-  // energy balance carries <1 - mu> = 4/3 of the hard-disk law (collide/hard_disk_scattering.hpp).
+  // energy balance carries <1 - mu> = 4/3 of the hard-disk law (tests/test_collision_rule.cpp, HardDiskScattering).
   for (double alpha : {0.3, 0.7, 0.95})
     for (double a2 : {0.0, 0.05}) {
       const double rate = 0.7, beta = 1.3;

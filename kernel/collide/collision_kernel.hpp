@@ -16,7 +16,7 @@
 //
 // An event kernel (001 eqs. 6-8) is B = rate |u|^lambda with e uniform on the sphere (circle)
 // (collide/isotropic_scattering.hpp), rate = gamma C_lambda (001 eq. 1); hard disks scatter by their own law
-// instead (collide/hard_disk_scattering.hpp). The event scheme draws candidates at
+// instead (collide/impact_direction.hpp). The event scheme draws candidates at
 // the constant majorant rate of 001 eq. (25) and keeps a candidate with probability (|u| / U_max)^lambda
 // (001 eq. 26), tested as u^(1 / lambda) < |u| / U_max on a batch of uniforms: the kernel has lambda,
 // constant_rate (every candidate is real: no relative speed and no majorant is computed) and

@@ -7,9 +7,9 @@
 //    PairCoefficients. The mean of Theta(g.sigma) (g.sigma) over sigma-hat uniform is |g| / 4 for d = 3 and
 //    |g| / pi for d = 2 (the integral of cos over a half circle, 2, over 2 pi), so the total rate per pair is
 //    pi sigma^2 n chi |g| (spheres) and 2 sigma n chi |g| (disks).
-//  - Event (001 eq. 6): B = rate |u|, e uniform on the sphere for spheres, the hard-disk law of
-//    collide/hard_disk_scattering.hpp for disks; a candidate is kept with probability |u| / U_max, the test
-//    u < |u| / U_max needing no transformation of u.
+//  - Event (001 eq. 6): B = rate |u|, e uniform on the sphere for spheres; disks collide as in the
+//    time-stepped form (impact direction and 000's rule, schemes/event_scheme.hpp); a candidate is kept with
+//    probability |u| / U_max, the test u < |u| / U_max needing no transformation of u.
 #include <cmath>
 #include <cstddef>
 #include <span>

@@ -11,8 +11,9 @@
 // 001 eq. (4). At each sample time every particle is brought to that time (001 Remark 2).
 //
 // Disks (Kernel::dimension = 2): the same in the plane z = 0, with |S^1| = 2 pi in place of |S^2| = 4 pi
-// (pi_hat = pi rate (n - 1) U_max^lambda), xi in the plane, and e uniform on the circle, or by the hard-disk
-// law (collide/hard_disk_scattering.hpp) for hard disks.
+// (pi_hat = pi rate (n - 1) U_max^lambda), xi in the plane, and e uniform on the circle; hard disks instead
+// collide as in the time-stepped scheme, sigma-hat by the hard-disk law (collide/impact_direction.hpp) and
+// 000's rule (collide/inelastic_rule.hpp), which is 001 eq. (4) with e the reflection of u-hat.
 //
 // The majorant, and what this code does differently from the paper's listing (docs/physics.md):
 //  - U_max bounds |v_i - v_j| by |v_i - V| + |v_j - V| for a fixed reference velocity V, so the raise of
@@ -36,8 +37,10 @@
 #include <utility>
 
 #include "kernel/collide/collision_kernel.hpp"
-#include "kernel/collide/hard_disk_scattering.hpp"
+#include "kernel/collide/impact_direction.hpp"
+#include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/isotropic_scattering.hpp"
+#include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
@@ -74,7 +77,7 @@ class BasicEventScheme {
   using Store = BasicSpeciesStore<Real>;
   using State = BasicGasState<Real>;
   static constexpr bool disks = Kernel::dimension == 2;
-  /// Hard disks: e from u and s = sin(theta) at the collision (the draw keeps s in ex).
+  /// Hard disks: the draw keeps the impact variate n in (ex, ey, ez), sigma-hat follows from u at the collision.
   static constexpr bool disk_law = disks && Kernel::impact_law == ImpactLaw::hard_core;
 
  public:
@@ -89,6 +92,7 @@ class BasicEventScheme {
         rng_(scene.run.seed, replica),
         state_(std::move(initial)),
         alpha_(scene.collision.restitution[0][0]),
+        pair_(pair_coefficients(scene).at(0)),
         particles_(state_.species.at(0).size()) {
     if (particles_ < 2) throw std::invalid_argument("the event scheme needs at least two particles");
     const double u = state_.scale.u();
@@ -192,7 +196,7 @@ class BasicEventScheme {
     std::array<std::size_t, batch_size> i{}, j{};
     std::array<double, batch_size> wait{};            // -log u of step 2.1: the waiting time is wait / rate
     std::array<double, batch_size> threshold{};       // step 2.8: real iff threshold < |v_i - v_j| / U_max
-    std::array<double, batch_size> ex{}, ey{}, ez{};  // e of step 2.9 (hard disks: s in ex)
+    std::array<double, batch_size> ex{}, ey{}, ez{};  // e of step 2.9 (hard disks: the impact variate n)
     // Draw k's normals: pairs k, batch_size + k and 2 batch_size + k, so that the same component of
     // consecutive draws is contiguous (candidates_in_simd loads them a register at a time)
     std::array<double, 3 * batch_size> normal1{}, normal2{};
@@ -253,7 +257,8 @@ class BasicEventScheme {
     negative_log_in_place(std::span(batch.wait));
     kernel_.acceptance_thresholds(std::span(batch.threshold));
     if constexpr (disk_law) {
-      for (std::size_t k = 0; k < b; ++k) batch.ex[k] = 2.0 * e1[k] - 1.0;  // s = sin(theta), uniform
+      impact_variates<2, ImpactLaw::hard_core>(std::span<const double, b>(e1), std::span<const double, b>(e2),
+                                               std::span(batch.ex), std::span(batch.ey), std::span(batch.ez));
     } else if constexpr (disks) {
       unit_circle_vectors(std::span<const double, b>(e1), std::span(batch.ex), std::span(batch.ey),
                           std::span(batch.ez));
@@ -447,11 +452,12 @@ class BasicEventScheme {
     if constexpr (!Kernel::constant_rate) raise_majorant(store.velocity(i), store.velocity(j));
   }
 
-  /// Step 2.9 with slot k's e (001 eq. 4), for hard disks e by their law from s.
+  /// Step 2.9 with slot k's e (001 eq. 4); hard disks by 000's rule with sigma-hat from slot k's n.
   void scatter(Vec3& vi, Vec3& vj, const DrawBatch& batch, std::size_t k) const noexcept {
     if constexpr (disk_law) {
       const Vec3 u = vi - vj;
-      isotropic_scattering(vi, vj, hard_disk_scattering_direction(u, norm(u), batch.ex[k]), alpha_);
+      const ImpactDirection id = impact_direction<2>(u, norm(u), {batch.ex[k], batch.ey[k], batch.ez[k]});
+      inelastic_collision(vi, vj, id.sigma, id.g_sigma, pair_);
     } else {
       isotropic_scattering(vi, vj, {batch.ex[k], batch.ey[k], batch.ez[k]}, alpha_);
     }
@@ -487,6 +493,7 @@ class BasicEventScheme {
   RandomStream rng_;
   State state_;
   double alpha_;
+  PairCoefficients pair_;  // hard disks: 000's rule for two unit masses
   std::size_t particles_;
   double noise_ = 0.0;                // 2 beta / u^2
   double rate_prefactor_ = 0.0;       // pi_hat / U_max^lambda

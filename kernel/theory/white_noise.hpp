@@ -1,7 +1,7 @@
 #pragma once
 // Theory of the uniformly heated gas of 001 (df/dt - beta Lap_v f = gamma Q_alpha(f), unit mass) with the
 // kernel B = rate |u|^lambda, rate = gamma C_lambda, e uniform on the sphere, in d = 3 or, with e uniform on
-// the circle, d = 2 (hard disks scatter by their own law instead, collide/hard_disk_scattering.hpp). Every
+// the circle, d = 2 (hard disks scatter by their own law instead, collide/impact_direction.hpp). Every
 // pair collides at |S^(d-1)| rate |u|^lambda: 4 pi rate |u|^lambda for spheres, 2 pi for disks.
 // Derivations: docs/physics.md.
 
@@ -54,9 +54,9 @@ double maxwellian_relative_speed_moment(double p, double temperature, int dimens
 /// Steady white-noise temperature from the energy balance
 ///   2 beta = |S^(d-1)| rate (1 - alpha^2) <1 - mu> <|u|^{2+lambda}> / (8 d)
 /// (001 eq. 15 for d = 3: (1 - alpha^2)/24 4 pi rate <|u|^{2+lambda}>), <1 - mu> = 1 for e uniform and 4/3 for
-/// hard disks (collide/hard_disk_scattering.hpp), with a Maxwellian closure, times the first-Sonine factor
-/// (1 + 3 a2 / 16) for hard cores (lambda = 1; pass a2 = 0 for the closure alone). Exact for lambda = 0
-/// (2 beta / kappa).
+/// hard disks (tests/test_collision_rule.cpp, HardDiskScattering), with a Maxwellian closure, times the first-Sonine
+/// factor (1 + 3 a2 / 16) for hard cores (lambda = 1; pass a2 = 0 for the closure alone). Exact for lambda = 0 (2 beta
+/// / kappa).
 double white_noise_steady_temperature(double lambda, double rate, double alpha, double beta, double a2,
                                       int dimension = 3) noexcept;
 
