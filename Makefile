@@ -8,7 +8,7 @@ GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
 .PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 hcs-disks-alpha08 rough-disks-noise fig-shear-disks fig-mixture-disks fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-7-shear-rate fig-000-8-shear-rate fig-000-sec5 fig-000-6-elastic fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-1 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
-	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted intruder-cost accuracy-cost bench-effects bench-threads bench-models stability
+	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted tails-disks-weighted intruder-cost accuracy-cost bench-effects bench-threads bench-models stability
 
 all: build
 
@@ -167,6 +167,13 @@ tails-001-weighted: build
 	$(PYTHON) drivers/tails_weighted.py --granmc $(GRANMC) drivers/scenes/001_tails_weighted/example7.toml \
 	  drivers/scenes/001_tails_weighted/example8.toml drivers/scenes/001_tails_weighted/example9.toml \
 	  drivers/scenes/001_tails_weighted/vhs_lambda025.toml drivers/scenes/001_tails_weighted/hcs_hard_spheres.toml
+
+# The same four laws in the plane (run.dimension = 2): Maxwell, hard and variable hard disks heated by white
+# noise, and freely cooling hard disks; results/tails_disks_weighted/{table.md, NAME.png}.
+tails-disks-weighted: build
+	$(PYTHON) drivers/tails_weighted.py --granmc $(GRANMC) --out results/tails_disks_weighted \
+	  drivers/scenes/tails_disks_weighted/maxwell.toml drivers/scenes/tails_disks_weighted/hard_disks.toml \
+	  drivers/scenes/tails_disks_weighted/vhs.toml drivers/scenes/tails_disks_weighted/hcs_hard_disks.toml
 
 # The habits CI holds the tree to (docs/ARCHITECTURE.md, "Rules"): the lint (clang-format, pyflakes), the suite
 # (built with warnings as errors) at 2 OpenMP threads and again at 1 and 4, the fast tests under the address and

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Run 001 tail scenes with weighted particles (drivers/scenes/001_tails_weighted/) and report granmc's own
+"""Run 001 tail scenes with weighted particles (drivers/scenes/001_tails_weighted/, and in the plane
+drivers/scenes/tails_disks_weighted/) and report granmc's own
 tail fit (the summary's tail.exponent, kernel/analysis/tail_fit.hpp) against the theory: b = 1 + lambda/2 heated
 by white noise, b = lambda freely cooling (`granmc theory`).
 

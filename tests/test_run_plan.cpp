@@ -155,9 +155,11 @@ particles_per_shell = 8
   EXPECT_NE(plan_refusal(with_storage("float")).find("[weights] with run.storage = \"float\""), std::string::npos);
   EXPECT_NE(plan_refusal(scene, Spread::particles).find("method other than \"dsmc\""), std::string::npos);
   Scene disks = scene;
-  disks.run.dimension = 2;
-  EXPECT_NE(plan_refusal(disks).find("[weights] with disks"), std::string::npos);
-  disks.weights.reset();  // the event scheme itself runs disks
+  disks.run.dimension = 2;  // the weighted disks take the event scheme's kernel in the plane
+  const RunPlan weighted_disks = make_plan(disks);
+  EXPECT_EQ(std::get<VariableHardDisks>(std::get<WeightedPlan>(weighted_disks.scheme).kernel).lambda, 0.5);
+  EXPECT_EQ(instantiation_name(weighted_disks, disks), "swpm<vhs-disk, white-noise>");
+  disks.weights.reset();
   const RunPlan event = make_plan(disks);
   EXPECT_EQ(std::get<VariableHardDisks>(std::get<EventPlan>(event.scheme).kernel).lambda, 0.5);
   EXPECT_EQ(instantiation_name(event, disks), "event<vhs-disk, white-noise>");

@@ -12,8 +12,7 @@
 //
 // Disks (Kernel::dimension = 2): the same in the plane z = 0, with |S^1| = 2 pi in place of |S^2| = 4 pi
 // (pi_hat = pi rate (n - 1) U_max^lambda), xi in the plane, and e uniform on the circle; hard disks instead
-// collide as in the time-stepped scheme, sigma-hat by the hard-disk law (collide/impact_direction.hpp) and
-// 000's rule (collide/inelastic_rule.hpp), which is 001 eq. (4) with e the reflection of u-hat.
+// collide through an impact direction and 000's rule (collide/rate_form_scattering.hpp).
 //
 // The majorant, and what this code does differently from the paper's listing (docs/physics.md):
 //  - U_max bounds |v_i - v_j| by |v_i - V| + |v_j - V| for a fixed reference velocity V, so the raise of
@@ -37,10 +36,8 @@
 #include <utility>
 
 #include "kernel/collide/collision_kernel.hpp"
-#include "kernel/collide/impact_direction.hpp"
-#include "kernel/collide/inelastic_rule.hpp"
-#include "kernel/collide/isotropic_scattering.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/collide/rate_form_scattering.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
@@ -77,8 +74,6 @@ class BasicEventScheme {
   using Store = BasicSpeciesStore<Real>;
   using State = BasicGasState<Real>;
   static constexpr bool disks = Kernel::dimension == 2;
-  /// Hard disks: the draw keeps the impact variate n in (ex, ey, ez), sigma-hat follows from u at the collision.
-  static constexpr bool disk_law = disks && Kernel::impact_law == ImpactLaw::hard_core;
 
  public:
   /// From the scene's initial Maxwellian.
@@ -196,7 +191,7 @@ class BasicEventScheme {
     std::array<std::size_t, batch_size> i{}, j{};
     std::array<double, batch_size> wait{};            // -log u of step 2.1: the waiting time is wait / rate
     std::array<double, batch_size> threshold{};       // step 2.8: real iff threshold < |v_i - v_j| / U_max
-    std::array<double, batch_size> ex{}, ey{}, ez{};  // e of step 2.9 (hard disks: the impact variate n)
+    std::array<double, batch_size> ex{}, ey{}, ez{};  // step 2.9's draw: e, or hard disks' impact variate n
     // Draw k's normals: pairs k, batch_size + k and 2 batch_size + k, so that the same component of
     // consecutive draws is contiguous (candidates_in_simd loads them a register at a time)
     std::array<double, 3 * batch_size> normal1{}, normal2{};
@@ -256,16 +251,8 @@ class BasicEventScheme {
     }
     negative_log_in_place(std::span(batch.wait));
     kernel_.acceptance_thresholds(std::span(batch.threshold));
-    if constexpr (disk_law) {
-      impact_variates<2, ImpactLaw::hard_core>(std::span<const double, b>(e1), std::span<const double, b>(e2),
-                                               std::span(batch.ex), std::span(batch.ey), std::span(batch.ez));
-    } else if constexpr (disks) {
-      unit_circle_vectors(std::span<const double, b>(e1), std::span(batch.ex), std::span(batch.ey),
-                          std::span(batch.ez));
-    } else {
-      unit_vectors(std::span<const double, b>(e1), std::span<const double, b>(e2), std::span(batch.ex),
-                   std::span(batch.ey), std::span(batch.ez));
-    }
+    scattering_variates<Kernel>(std::span<const double, b>(e1), std::span<const double, b>(e2), std::span(batch.ex),
+                                std::span(batch.ey), std::span(batch.ez));
     if (noise_ != 0.0) {
       standard_normal_pairs(std::span<const double, 3 * batch_size>(u1), std::span<const double, 3 * batch_size>(u2),
                             std::span(batch.normal1), std::span(batch.normal2));
@@ -452,15 +439,9 @@ class BasicEventScheme {
     if constexpr (!Kernel::constant_rate) raise_majorant(store.velocity(i), store.velocity(j));
   }
 
-  /// Step 2.9 with slot k's e (001 eq. 4); hard disks by 000's rule with sigma-hat from slot k's n.
+  /// Step 2.9 with slot k's draw (collide/rate_form_scattering.hpp).
   void scatter(Vec3& vi, Vec3& vj, const DrawBatch& batch, std::size_t k) const noexcept {
-    if constexpr (disk_law) {
-      const Vec3 u = vi - vj;
-      const ImpactDirection id = impact_direction<2>(u, norm(u), {batch.ex[k], batch.ey[k], batch.ez[k]});
-      inelastic_collision(vi, vj, id.sigma, id.g_sigma, pair_);
-    } else {
-      isotropic_scattering(vi, vj, {batch.ex[k], batch.ey[k], batch.ez[k]}, alpha_);
-    }
+    rate_form_scattering<Kernel>(vi, vj, {batch.ex[k], batch.ey[k], batch.ez[k]}, alpha_, pair_);
   }
 
   /// Steps 2.7 and 2.10: U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|); whether it rose. The square

@@ -2,15 +2,16 @@
 // The stochastic weighted particle method (SWPM; Rjasanow and Wagner, J. Comput. Phys. 124 (1996) 243; Math.
 // Comput. Modelling 33 (2001) 907) for the uniformly heated or freely cooling inelastic Boltzmann equation of
 // 001 (df/dt - beta Lap_v f = gamma Q_alpha(f), 001 eq. 1, B = rate |u|^lambda), time-step free as 001 sec. 4,
-// one replica of one species: the tails of f resolved to densities far below 1/N (001 Remark 10). The
-// derivation, with the inelastic weight transfer: docs/derivations/swpm-inelastic.md.
+// one replica of one species, spheres or disks: the tails of f resolved to densities far below 1/N (001 Remark
+// 10). The derivation, with the inelastic weight transfer: docs/derivations/swpm-inelastic.md.
 //
 // The particles (schemes/weighted_particles.hpp) represent nu = sum_k w_k delta(v - v_k), total weight 1.
 // A pair {i, j} collides at the rate 4 pi rate max(w_i, w_j) |v_i - v_j|^lambda; then the lighter partner,
 // l, takes its post-collision velocity (001 eq. 4) whole, and the heavier, h, keeps weight w_h - w_l at v_h
 // and gives weight w_l to a new particle at its post-collision velocity (the weight transfer gamma = min(w_i,
-// w_j), kappa = 0 of Rjasanow and Wagner). Equal weights collide as in the event scheme. Candidates come at
-// the majorant rate
+// w_j), kappa = 0 of Rjasanow and Wagner). Equal weights collide as in the event scheme, and so does a pair
+// of disks (Kernel::dimension = 2: the plane z = 0, 2 pi for 4 pi, xi in the plane, the collision of
+// collide/rate_form_scattering.hpp). Candidates come at the majorant rate
 //   pi_hat = 4 pi rate U_max^lambda W_hat (n - 1),   W_hat = sum over weight classes of n_e 2^e,
 // an ordered pair is i by weight class (weighted_particles.hpp) and j uniform among the n - 1 others, and it
 // is real with probability (w_i / 2^e) (max(w_i, w_j) / (w_i + w_j)) (|v_i - v_j| / U_max)^lambda: the
@@ -36,7 +37,8 @@
 #include <stdexcept>
 
 #include "kernel/collide/collision_kernel.hpp"
-#include "kernel/collide/isotropic_scattering.hpp"
+#include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/collide/rate_form_scattering.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
@@ -53,6 +55,8 @@ namespace granmc {
 
 template <EventKernel Kernel>
 class SwpmScheme {
+  static constexpr int dimension = Kernel::dimension;
+
  public:
   /// From the scene's initial Maxwellian: the N = species.particles velocities of the equal-weight start
   /// (the same draws as the event scheme's), each of weight 1 / N, then the weight control at t = 0.
@@ -65,6 +69,7 @@ class SwpmScheme {
         kernel_(kernel),
         rng_(scene.run.seed, replica),
         alpha_(scene.collision.restitution[0][0]),
+        pair_(pair_coefficients(scene).at(0)),
         scale_(start.scale),
         control_(static_cast<std::size_t>(scene.histogram.shells), 1.0, scene.weights->particles_per_shell,
                  scene.weights->growth) {
@@ -122,7 +127,7 @@ class SwpmScheme {
     return rng_.block(RngPurpose::swpm_candidate, 0, draws_, block);
   }
 
-  /// pi_hat = 4 pi rate U_max^lambda W_hat (n - 1).
+  /// pi_hat = |S^(d-1)| rate U_max^lambda W_hat (n - 1).
   [[nodiscard]] double candidate_rate() const noexcept {
     return candidate_prefactor_ * particles_.weight_bound() * static_cast<double>(particles_.size() - 1);
   }
@@ -136,7 +141,8 @@ class SwpmScheme {
 
   /// One candidate at time_, with the blocks (swpm_candidate, 0, draws_, 0..4): block 0 the waiting time
   /// (used by advance_to), the class share and the member of i; block 1 j and the acceptance uniform;
-  /// block 2 the direction e; blocks 3-4 the six normals of the two Brownian increments.
+  /// block 2 the direction e; blocks 3-4 the six normals of the two Brownian increments (disks: the z
+  /// normals unused).
   void candidate(const RandomBlock& b0) {
     ++tally_.candidates;
     const RandomBlock b1 = draw(1), b2 = draw(2);
@@ -150,8 +156,8 @@ class SwpmScheme {
       standard_normal_pair(uniform_open(b3[0]), uniform_open(b3[1]), z[0], z[1]);
       standard_normal_pair(uniform_open(b3[2]), uniform_open(b3[3]), z[2], z[3]);
       standard_normal_pair(uniform_open(b4[0]), uniform_open(b4[1]), z[4], z[5]);
-      brownian_update(i, {z[0], z[1], z[2]});
-      brownian_update(j, {z[3], z[4], z[5]});
+      brownian_update(i, in_plane({z[0], z[1], z[2]}));
+      brownian_update(j, in_plane({z[3], z[4], z[5]}));
     }
     Vec3 vi = particles_.velocity(i), vj = particles_.velocity(j);
     const double wi = particles_.weight(i), wj = particles_.weight(j);
@@ -170,7 +176,8 @@ class SwpmScheme {
       split_if_heavy(j);
       return;
     }
-    isotropic_scattering(vi, vj, unit_vector(uniform_open(b2[0]), uniform_open(b2[1])), alpha_);  // 001 eq. (4)
+    rate_form_scattering<Kernel>(vi, vj, scattering_variate<Kernel>(uniform_open(b2[0]), uniform_open(b2[1])), alpha_,
+                                 pair_);  // 001 eq. (4)
     ++tally_.collisions;
     if (wi == wj) {
       particles_.set_velocity(i, vi);
@@ -191,6 +198,9 @@ class SwpmScheme {
     split_if_heavy(j);
   }
 
+  /// A Brownian increment's normals, without the z component for disks.
+  [[nodiscard]] static Vec3 in_plane(const Vec3& xi) noexcept { return dimension == 2 ? Vec3{xi.x, xi.y, 0.0} : xi; }
+
   void split_if_heavy(std::size_t k) {
     control_.count_split(split_particle(particles_, k, control_.copies(particles_.weight(k), particles_.velocity(k))));
   }
@@ -199,7 +209,7 @@ class SwpmScheme {
   void synchronise(double t) {
     if (noise_ != 0.0)
       for_each_particle_normal<64>(rng_, RngPurpose::swpm_sync, 0, syncs_, 0, particles_.size(),
-                                   [&](std::size_t k, const Vec3& xi) { brownian_update(k, xi); });
+                                   [&](std::size_t k, const Vec3& xi) { brownian_update(k, in_plane(xi)); });
     ++syncs_;
     control_now(t);
   }
@@ -209,8 +219,8 @@ class SwpmScheme {
   void control_now(double t) {
     const WeightedParticles::Totals totals = particles_.totals();
     const Vec3 mean = (1.0 / totals.weight) * totals.momentum;
-    // theta = m <|c - V|^2> / 3 of the measure (stored units)
-    const double theta = scene_.species[0].mass * (totals.twice_energy / totals.weight - norm2(mean)) / 3.0;
+    // theta = m <|c - V|^2> / d of the measure (stored units)
+    const double theta = scene_.species[0].mass * (totals.twice_energy / totals.weight - norm2(mean)) / dimension;
     const bool cools_freely = scene_.thermostat.kind == ThermostatKind::none;
     if (cools_freely && (theta > rescale_factor || theta < 1.0 / rescale_factor)) {
       const double s = 1.0 / std::sqrt(theta);
@@ -228,13 +238,14 @@ class SwpmScheme {
     reset_majorant();
   }
 
-  /// The stored unit and what follows it: 2 beta / u^2 and 4 pi rate u^lambda.
+  /// The stored unit and what follows it: 2 beta / u^2 and |S^(d-1)| rate u^lambda (4 pi; disks 2 pi).
   void set_scale(const VelocityScale& scale) noexcept {
     scale_ = scale;
     const double u = scale_.u();
     noise_ = 2.0 * scene_.thermostat.beta / (u * u);  // 2 beta in stored units per unit time
-    // 4 pi rate (u U_max)^lambda per unit weight (U_max in stored units)
-    rate_prefactor_ = 4.0 * std::numbers::pi * scene_.collision.rate * std::pow(u, kernel_.lambda);
+    // |S^(d-1)| rate (u U_max)^lambda per unit weight (U_max in stored units)
+    rate_prefactor_ =
+        (dimension == 2 ? 2.0 : 4.0) * std::numbers::pi * scene_.collision.rate * std::pow(u, kernel_.lambda);
   }
 
   /// The histogram's shell width in stored units, at stored temperature theta.
@@ -273,14 +284,15 @@ class SwpmScheme {
   Kernel kernel_;
   RandomStream rng_;
   double alpha_;
-  VelocityScale scale_;  // the stored unit: u = sqrt(T(0)), then moved by rescalings
+  PairCoefficients pair_;  // hard disks: 000's rule for two unit masses
+  VelocityScale scale_;    // the stored unit: u = sqrt(T(0)), then moved by rescalings
   std::uint64_t rescales_ = 0;
   WeightControl control_;
   WeightedParticles particles_;
   double time_ = 0.0;
   double noise_ = 0.0;                // 2 beta / u^2
-  double rate_prefactor_ = 0.0;       // 4 pi rate u^lambda
-  double candidate_prefactor_ = 0.0;  // 4 pi rate (u U_max)^lambda
+  double rate_prefactor_ = 0.0;       // |S^(d-1)| rate u^lambda
+  double candidate_prefactor_ = 0.0;  // |S^(d-1)| rate (u U_max)^lambda
   double majorant_ = 0.0;             // U_max, stored units
   Vec3 reference_;                    // V of the majorant, stored units
   std::uint64_t draws_ = 0;           // candidate draws so far (the random counter)

@@ -9,7 +9,8 @@
 //    and collisions. The scheme splits a particle whenever it touches it (schemes/swpm_scheme.hpp), and the
 //    control splits every particle.
 //  - reduction, only in a shell holding more than 2 M particles: its particles, ordered along the sphere
-//    (a Morton curve of the octahedral map of their direction), are grouped in order until a group weighs
+//    (a Morton curve of the octahedral map of their direction; for disks, z = 0, the map's diamond
+//    |x| + |y| = 1, along each edge of which the key grows monotonically), are grouped in order until a group weighs
 //    2 W_s; a group of three or more, of weight W, mean V and spread eps = sum w |v - V|^2 / W, becomes two
 //    particles of weight W / 2 at V +- sqrt(eps) e (Rjasanow, Schreiber and Wagner, J. Comput. Phys. 145
 //    (1998) 382): mass, momentum and energy are kept to rounding whatever the unit vector e. e is chosen

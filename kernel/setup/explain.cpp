@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <tuple>
 
 #include "kernel/collide/pair_coefficients.hpp"
@@ -73,17 +74,25 @@ bool beyond_caches(const Scene& scene) {
   return static_cast<double>(total_particles(scene)) * static_cast<double>(stored_bytes_per_particle(scene)) > 100e6;
 }
 
+/// The gas of 001's kernel form (collide/rate_form_scattering.hpp).
+std::string rate_form_kernel(const Scene& scene) {
+  char kernel[128];
+  const bool disks = scene.run.dimension == 2;
+  std::snprintf(kernel, sizeof kernel, "one species%s, kernel rate |u|^lambda with lambda = %g, %s",
+                disks ? " of disks" : "", scene.collision.lambda,
+                disks && scene.collision.lambda == 1.0 ? "e by the hard-disk law" : "e uniform (001 eqs. 4, 8)");
+  return kernel;
+}
+
+/// |S^(d-1)|: 4 pi for spheres, 2 pi for disks.
+double unit_sphere_surface(const Scene& scene) { return (scene.run.dimension == 2 ? 2.0 : 4.0) * std::numbers::pi; }
+
 /// The time-step-free scheme (001 sec. 4): candidates at pi_hat = |S^(d-1)| / 2 rate (n - 1) U_max^lambda
 /// (2 pi for spheres, pi for disks), U_max estimated as 2 x the expected largest speed at the larger of T(0)
 /// and the steady temperature.
 void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
   const CollisionConfig& c = scene.collision;
-  char kernel[128];
-  const bool disks = scene.run.dimension == 2;
-  std::snprintf(kernel, sizeof kernel, "one species%s, kernel rate |u|^lambda with lambda = %g, %s",
-                disks ? " of disks" : "", c.lambda,
-                disks && c.lambda == 1.0 ? "e by the hard-disk law" : "e uniform (001 eqs. 4, 8)");
-  out.effects.push_back(kernel);
+  out.effects.push_back(rate_form_kernel(scene));
   if (plan.white_noise)
     out.effects.push_back("white noise by lazy Brownian updates at collision and sample times (001 eq. 23)");
   else
@@ -98,14 +107,14 @@ void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
         std::max(temperature, theory::white_noise_steady_temperature(c.lambda, c.rate, c.restitution[0][0],
                                                                      scene.thermostat.beta, 0.0, scene.run.dimension));
   const double majorant = 2.0 * expected_max_speed(n) * std::sqrt(temperature);
-  out.candidates = scene.run.replicas * scene.run.t_end * (disks ? 1.0 : 2.0) * std::numbers::pi * c.rate * (n - 1.0) *
+  out.candidates = scene.run.replicas * scene.run.t_end * 0.5 * unit_sphere_surface(scene) * c.rate * (n - 1.0) *
                    std::pow(majorant, c.lambda);
   out.candidates_upper_bound = false;
   out.candidates_per_second = event_candidates_per_second(plan, beyond_caches(scene));
 }
 
 /// Weighted particles: about M particles in each histogram shell (every shell once the tail has grown), at
-/// most growth times that between controls; candidates at 4 pi rate U_max^lambda W_hat (n - 1) with
+/// most growth times that between controls; candidates at |S^(d-1)| rate U_max^lambda W_hat (n - 1) with
 /// W_hat <= 2 (weights summing to 1) and U_max at most twice the histogram's radius.
 void explain(const WeightedPlan& plan, const Scene& scene, PlanExplanation& out) {
   const CollisionConfig& c = scene.collision;
@@ -116,9 +125,7 @@ void explain(const WeightedPlan& plan, const Scene& scene, PlanExplanation& out)
                 "reduction of shells above %d",
                 w.particles_per_shell, 2 * w.particles_per_shell);
   out.effects.push_back(text);
-  std::snprintf(text, sizeof text, "one species, kernel rate |u|^lambda with lambda = %g, e uniform (001 eqs. 4, 8)",
-                c.lambda);
-  out.effects.push_back(text);
+  out.effects.push_back(rate_form_kernel(scene));
   if (plan.white_noise)
     out.effects.push_back("white noise by lazy Brownian updates at candidate and control times (001 eq. 23)");
   else
@@ -127,7 +134,7 @@ void explain(const WeightedPlan& plan, const Scene& scene, PlanExplanation& out)
   out.bytes_per_particle = weighted_bytes_per_particle;
   out.particle_bytes =
       static_cast<std::uint64_t>(n) * out.bytes_per_particle * static_cast<std::uint64_t>(out.replicas_in_flight);
-  out.candidates = scene.run.replicas * scene.run.t_end * 4.0 * std::numbers::pi * c.rate * 2.0 * n *
+  out.candidates = scene.run.replicas * scene.run.t_end * unit_sphere_surface(scene) * c.rate * 2.0 * n *
                    std::pow(2.0 * scene.histogram.radius, c.lambda);
   out.candidates_upper_bound = true;
   out.candidates_per_second = weighted_candidates_per_second(plan);

@@ -22,7 +22,7 @@ constexpr const char* supported_list =
     "\"white-noise\", packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of "
     "dimension 1 or 2 (the needle) in a \"gaussian\" or \"power-law\" bath; "
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
-    "every gas scene; disks (run.dimension = 2) as spheres but for the relaxation term, the weights and "
+    "every gas scene; disks (run.dimension = 2) as spheres but for the relaxation term and "
     "the spread over ranks (with a packing_fraction: Henderson's chi, Jenkins and Mancini's chi_ij); rough spheres or "
     "disks (collision.tangential_restitution > "
     "-1) with method = \"dsmc\", one species, "
@@ -186,8 +186,7 @@ RunPlan make_plan(const Scene& scene, Spread spread) {
     if (spread == Spread::particles) refuse_spread("a method other than \"dsmc\"");
     if (!scene.weights) return {event, spread};
     if (scene.run.storage != Storage::double_precision) refuse("[weights] with run.storage = \"float\"");
-    if (scene.run.dimension == 2) refuse("[weights] with disks (run.dimension = 2)");
-    return {WeightedPlan{kernel_of_lambda<3, WeightedKernelChoice>(scene.collision), event.white_noise}, spread};
+    return {WeightedPlan{event.kernel, event.white_noise}, spread};
   }
   return {stepped_plan(scene, spread), spread};
 }

@@ -54,11 +54,9 @@ struct EffectList {
 };
 
 /// The collision kernels, one per physical law and dimension (collide/collision_kernel.hpp): of the event
-/// scheme, of the weighted particles (spheres only), and of the time-stepped scheme, which also has rough
-/// particles.
+/// scheme and the weighted particles, and of the time-stepped scheme, which also has rough particles.
 using EventKernelChoice =
     std::variant<HardSphere, MaxwellPseudomolecules, VariableHardSpheres, HardDisk, MaxwellDisks, VariableHardDisks>;
-using WeightedKernelChoice = std::variant<HardSphere, MaxwellPseudomolecules, VariableHardSpheres>;
 using KernelChoice = std::variant<HardSphere, HardDisk, RoughHardSphere, RoughHardDisk, MaxwellPseudomolecules,
                                   VariableHardSpheres, MaxwellDisks, VariableHardDisks>;
 /// Uniform shear flow: none, the inertial force (Boltzmann), or with the Enskog shift of the contact velocity.
@@ -140,7 +138,7 @@ struct EventPlan {
 /// Weighted particles for the tails (SWPM, schemes/swpm_scheme.hpp; 001 Remark 10): the event scheme's
 /// gas, double storage.
 struct WeightedPlan {
-  WeightedKernelChoice kernel;
+  EventKernelChoice kernel;
   bool white_noise = false;  // beta > 0 acts by lazy Brownian updates (001 eq. 23)
 };
 
