@@ -89,9 +89,19 @@ void add_intruder(const Scene& scene, const std::vector<double>& /*times*/, nloh
   }
 }
 
+/// The white-noise a2 of hard cores, first Sonine (van Noije and Ernst), and the linear second-Sonine a2 and
+/// a3 (theory/sonine_hcs.hpp), whose shift from the first is the first's model error.
+void add_white_noise_sonine(double alpha, int d, nlohmann::json& w) {
+  const theory::SecondSonine second = theory::second_sonine_linear(alpha, theory::SonineState::white_noise, d);
+  w["a2"] = theory::white_noise_a2(alpha, d);
+  w["a2_model_error"] = theory::white_noise_a2_model_error(alpha, d);
+  w["a2_second_sonine"] = second.a2;
+  w["a3_second_sonine"] = second.a3;
+}
+
 /// The kernel form of 001, spheres or disks: Maxwell's exact temperature relaxation, the white-noise steady
-/// state (Maxwell's exact a2, hard cores' first-Sonine a2) and tails; the white-noise steady state of hard
-/// spheres or disks in 000's form (first-Sonine a2, temperature, tails).
+/// state (Maxwell's exact a2, hard cores' first- and second-Sonine a2) and tails; the white-noise steady state
+/// of hard spheres or disks in 000's form (Sonine a2, temperature, tails).
 void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohmann::json& j, nlohmann::json& applies) {
   const int d = scene.run.dimension;
   if (scene.species.size() == 1 && scene.collision.rate > 0.0) {  // the kernel form of 001
@@ -120,17 +130,17 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
     if (beta > 0.0) {
       applies.push_back(
           "white-noise heated steady state: temperature from the energy balance (001 eq. 15), "
-          "tail exponent b = 1 + lambda/2 (001 eqs. 19-21), a2 exact for Maxwell pseudomolecules and "
-          "first-Sonine for hard cores");
+          "tail exponent b = 1 + lambda/2 (001 eqs. 19-21), a2 exact for Maxwell pseudomolecules, first-Sonine "
+          "for VHS, and first- and second-Sonine for hard cores");
       nlohmann::json w = {
           {"tail_exponent", theory::tail_exponent(lambda)},
           {"steady_temperature_maxwellian", theory::white_noise_steady_temperature(lambda, rate, alpha, beta, 0.0, d)}};
       if (lambda == 0.0) w["a2"] = theory::maxwell_white_noise_a2(alpha, d);
-      if (lambda == 1.0) {
-        const double a2 = theory::white_noise_a2(alpha, d);
-        w["a2"] = a2;
-        w["steady_temperature_first_sonine"] = theory::white_noise_steady_temperature(lambda, rate, alpha, beta, a2, d);
-      }
+      if (lambda == 1.0) add_white_noise_sonine(alpha, d, w);
+      if (lambda > 0.0 && lambda < 1.0) w["a2"] = theory::isotropic_white_noise_a2(alpha, lambda, d);  // VHS
+      if (lambda > 0.0)
+        w["steady_temperature_first_sonine"] =
+            theory::white_noise_steady_temperature(lambda, rate, alpha, beta, w["a2"].get<double>(), d);
       j["white_noise"] = w;
     }
     if (scene.thermostat.kind == ThermostatKind::none && lambda > 0.0) {
@@ -143,7 +153,8 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
              scene.collision.kernel == CollisionKernel::hard_sphere) {
     applies.push_back(std::string("white-noise heated steady state, monodisperse ") +
                       (d == 2 ? "hard disks" : "hard spheres") +
-                      ": first-Sonine a2, steady temperature from the energy balance, tail exponent b = 3/2 of "
+                      ": first- and second-Sonine a2 (and a3), steady temperature from the energy balance, "
+                      "tail exponent b = 3/2 of "
                       "f ~ exp(-a c^b) (van Noije and Ernst 1998, any d)");
     const SpeciesConfig& sp = scene.species[0];
     const double alpha = scene.collision.restitution[0][0], phi = scene.collision.packing_fraction;
@@ -152,10 +163,11 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
     auto temperature = [&](double a) {
       return theory::white_noise_temperature(alpha, sp.density, sp.diameter, sp.mass, chi, beta, a, d);
     };
-    j["white_noise"] = {{"a2", a2},
-                        {"steady_temperature_maxwellian", temperature(0.0)},
+    nlohmann::json w = {{"steady_temperature_maxwellian", temperature(0.0)},
                         {"steady_temperature_first_sonine", temperature(a2)},
                         {"tail_exponent", 1.5}};
+    add_white_noise_sonine(alpha, d, w);
+    j["white_noise"] = w;
   }
 }
 

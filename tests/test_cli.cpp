@@ -140,6 +140,25 @@ TEST_F(Cli, HardDisksHaveTheirTheoryAndRun) {
   EXPECT_NE(event.stderr_text.find("run.dimension = 2"), std::string::npos) << event.stderr_text;
 }
 
+/// White noise on hard cores: `granmc theory` gives the first- and second-Sonine a2 (and a3) of the heated
+/// state (docs/derivations/sonine-hcs.md, "White noise"), the same for the hard disks of 000's form and of
+/// 001's kernel form, with the first Sonine's model error their distance.
+TEST_F(Cli, WhiteNoiseHardCoresHaveTheirSecondSonine) {
+  const std::string scenes = std::string(GRANMC_SOURCE_DIR) + "/drivers/scenes/white_noise/";
+  const Outcome stepped = granmc("theory " + scenes + "disks.toml");
+  const Outcome event = granmc("theory " + scenes + "event_disks_hard.toml");
+  ASSERT_EQ(stepped.status, 0) << stepped.stderr_text;
+  ASSERT_EQ(event.status, 0) << event.stderr_text;
+  const nlohmann::json a = nlohmann::json::parse(stepped.stdout_text)["white_noise"];
+  const nlohmann::json b = nlohmann::json::parse(event.stdout_text)["white_noise"];
+  for (const char* key : {"a2", "a2_second_sonine", "a3_second_sonine", "a2_model_error"})
+    EXPECT_EQ(a[key], b[key]) << key;
+  const double first = a["a2"], second = a["a2_second_sonine"];
+  EXPECT_EQ(a["a2_model_error"].get<double>(), std::fabs(second - first));
+  EXPECT_NEAR(second, 0.03452, 5e-6);  // alpha = 1/2, d = 2: docs/derivations/sonine-hcs.md's table
+  EXPECT_NEAR(a["a3_second_sonine"].get<double>(), -0.00550, 5e-6);
+}
+
 TEST_F(Cli, RoughParticlesHaveTheirTheoryAndRun) {
   write("rough.toml", good_scene + "tangential_restitution = 0.5\n");
   const Outcome o = granmc("theory rough.toml");

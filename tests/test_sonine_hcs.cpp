@@ -1,5 +1,7 @@
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -24,6 +26,17 @@ double e4(double alpha, double a2, double a3, int d = 3) {
 double e6(double alpha, double a2, double a3, int d = 3) {
   const SonineMoments m = hcs_collisional_moments(alpha, a2, a3, d);
   return m.mu6 - (d == 3 ? 26.25 : 18.0) * m.mu2 * (1.0 + 3.0 * a2 - a3);
+}
+
+// White-noise residuals: the noise term (xi/2) Lap_c F with xi = mu_2 / d gives mu_p = (p (p + d - 2) / d) mu_2
+// <c^(p - 2)>, so E4 = mu_4 - (d + 2) mu_2 and E6 = mu_6 - (3/4)(d + 2)(d + 4) mu_2 (1 + a2).
+double wn_e4(double alpha, double a2, double a3, int d) {
+  const SonineMoments m = hcs_collisional_moments(alpha, a2, a3, d);
+  return m.mu4 - (d + 2.0) * m.mu2;
+}
+double wn_e6(double alpha, double a2, double a3, int d) {
+  const SonineMoments m = hcs_collisional_moments(alpha, a2, a3, d);
+  return m.mu6 - 0.75 * (d + 2.0) * (d + 4.0) * m.mu2 * (1.0 + a2);
 }
 
 // Value and first derivatives at (0, 0) of a function that is a polynomial of low degree in (a2, a3): the
@@ -61,8 +74,8 @@ TEST(SonineHcs, ElasticLimitIsMaxwellian) {
   EXPECT_EQ(hcs_a2_nonlinear(1.0), 0.0);
   EXPECT_NEAR(hcs_second_sonine(1.0).a2, 0.0, 1e-300);
   EXPECT_NEAR(hcs_second_sonine(1.0).a3, 0.0, 1e-300);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(1.0).a2, 0.0, 1e-15);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(1.0).a3, 0.0, 1e-15);
+  EXPECT_NEAR(second_sonine_nonlinear(1.0, SonineState::cooling).a2, 0.0, 1e-15);
+  EXPECT_NEAR(second_sonine_nonlinear(1.0, SonineState::cooling).a3, 0.0, 1e-15);
   // A Maxwellian is collisionally invariant for elastic spheres.
   const SonineMoments m = hcs_collisional_moments(1.0, 0.0, 0.0);
   EXPECT_EQ(m.mu2, 0.0);
@@ -76,7 +89,7 @@ TEST(SonineHcs, ElasticLimitIsMaxwellian) {
   EXPECT_NEAR(hcs_a2_nonlinear(1.0 - eps) / eps, -0.25, 1e-5);
   EXPECT_NEAR(hcs_second_sonine(1.0 - eps).a2 / eps, -21.0 / 80.0, 1e-5);
   EXPECT_NEAR(hcs_second_sonine(1.0 - eps).a3 / eps, -1.0 / 20.0, 1e-5);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(1.0 - eps).a2 / eps, -21.0 / 80.0, 1e-5);
+  EXPECT_NEAR(second_sonine_nonlinear(1.0 - eps, SonineState::cooling).a2 / eps, -21.0 / 80.0, 1e-5);
 }
 
 TEST(SonineHcs, SecondSonineSolvesLinearisedMomentEquations) {
@@ -105,11 +118,81 @@ TEST(SonineHcs, NonlinearSolutionsHaveZeroResidual) {
       const double x = hcs_a2_nonlinear(alpha, d);
       EXPECT_NEAR(e4(alpha, x, 0.0, d), 0.0, 1e-14);
       EXPECT_LT(std::abs(x - hcs_a2(alpha, d)), first);
-      const SecondSonine s = hcs_second_sonine_nonlinear(alpha, d);
+      const SecondSonine s = second_sonine_nonlinear(alpha, SonineState::cooling, d);
       EXPECT_NEAR(e4(alpha, s.a2, s.a3, d), 0.0, 1e-14);
       EXPECT_NEAR(e6(alpha, s.a2, s.a3, d), 0.0, 1e-13);
       EXPECT_LT(std::abs(s.a2 - hcs_second_sonine(alpha, d).a2), second);
     }
+}
+
+TEST(SonineHcs, GeneralLinearSolutionIsTheClosedForm) {
+  for (const int d : {3, 2})
+    for (double alpha = 0.0; alpha <= 1.0; alpha += 0.05) {
+      SCOPED_TRACE("alpha = " + std::to_string(alpha) + ", d = " + std::to_string(d));
+      const SecondSonine general = second_sonine_linear(alpha, SonineState::cooling, d);
+      const SecondSonine closed = hcs_second_sonine(alpha, d);
+      EXPECT_NEAR(general.a2, closed.a2, 1e-14);
+      EXPECT_NEAR(general.a3, closed.a3, 1e-14);
+    }
+}
+
+TEST(WhiteNoiseSonine, LinearTruncationReproducesVanNoijeErnst) {
+  // The white-noise condition E4 with a3 = 0, linearised, is van Noije and Ernst's a2 (theory::white_noise_a2,
+  // written from their closed form): the conditions of the second Sonine are those of the first, plus E6.
+  for (const int d : {3, 2})
+    for (double alpha = 0.0; alpha <= 1.0; alpha += 0.05) {
+      SCOPED_TRACE("alpha = " + std::to_string(alpha) + ", d = " + std::to_string(d));
+      const Linear l4 = linearise([&](double x, double y) { return wn_e4(alpha, x, y, d); });
+      EXPECT_NEAR(-l4.a / l4.b, white_noise_a2(alpha, d), 1e-9);  // the differences' rounding: about 1e-10
+    }
+}
+
+TEST(WhiteNoiseSonine, SecondSonineSolvesTheConditions) {
+  for (const int d : {3, 2}) {
+    EXPECT_EQ(second_sonine_linear(1.0, SonineState::white_noise, d).a2, 0.0);
+    EXPECT_EQ(second_sonine_linear(1.0, SonineState::white_noise, d).a3, 0.0);
+    for (double alpha = 0.0; alpha < 1.0; alpha += 0.05) {
+      SCOPED_TRACE("alpha = " + std::to_string(alpha) + ", d = " + std::to_string(d));
+      const Linear l4 = linearise([&](double x, double y) { return wn_e4(alpha, x, y, d); });
+      const Linear l6 = linearise([&](double x, double y) { return wn_e6(alpha, x, y, d); });
+      const SecondSonine s = second_sonine_linear(alpha, SonineState::white_noise, d);
+      EXPECT_NEAR(l4.a + l4.b * s.a2 + l4.c * s.a3, 0.0, 1e-8);
+      EXPECT_NEAR(l6.a + l6.b * s.a2 + l6.c * s.a3, 0.0, 1e-7);
+      const SecondSonine n = second_sonine_nonlinear(alpha, SonineState::white_noise, d);
+      EXPECT_NEAR(wn_e4(alpha, n.a2, n.a3, d), 0.0, 1e-14);
+      EXPECT_NEAR(wn_e6(alpha, n.a2, n.a3, d), 0.0, 1e-13);
+      // White noise keeps F closer to the Maxwellian than cooling does: a2 within 0.005 of the linear one
+      EXPECT_LT(std::abs(n.a2 - s.a2), 0.005);
+      EXPECT_NEAR(white_noise_a2_model_error(alpha, d), std::abs(s.a2 - white_noise_a2(alpha, d)), 1e-15);
+    }
+  }
+  for (const int d : {3, 2})
+    for (const double alpha : {0.1, 0.5, 0.8, 0.9}) {
+      const SecondSonine s = second_sonine_linear(alpha, SonineState::white_noise, d);
+      const SecondSonine n = second_sonine_nonlinear(alpha, SonineState::white_noise, d);
+      std::printf(
+          "[ values ] d = %d, alpha = %.1f: first Sonine a2 %.5f; second Sonine a2 %.5f, a3 %.5f; "
+          "nonlinear a2 %.5f, a3 %.5f\n",
+          d, alpha, white_noise_a2(alpha, d), s.a2, s.a3, n.a2, n.a3);
+    }
+}
+
+TEST(IsotropicWhiteNoiseA2, HasTheExactLimitsAndTheDerivationsValues) {
+  // docs/derivations/vhs_white_noise_a2.py: lambda = 0 is the exact Maxwell a2, lambda = 1 with d = 3 van Noije
+  // and Ernst's hard spheres (whose e is uniform); in between the script's exact rationals.
+  for (const int d : {3, 2})
+    for (double alpha = 0.0; alpha <= 1.0; alpha += 0.05) {
+      SCOPED_TRACE("alpha = " + std::to_string(alpha) + ", d = " + std::to_string(d));
+      EXPECT_NEAR(isotropic_white_noise_a2(alpha, 0.0, d), maxwell_white_noise_a2(alpha, d), 1e-15);
+      if (d == 3) {
+        EXPECT_NEAR(isotropic_white_noise_a2(alpha, 1.0, d), white_noise_a2(alpha, d), 1e-15);
+      }
+    }
+  EXPECT_EQ(isotropic_white_noise_a2(1.0, 0.5, 2), 0.0);
+  EXPECT_NEAR(isotropic_white_noise_a2(0.5, 0.5, 2), 448.0 / 7365.0, 1e-15);
+  EXPECT_NEAR(isotropic_white_noise_a2(0.5, 0.5, 3), 64.0 / 1235.0, 1e-15);
+  EXPECT_NEAR(isotropic_white_noise_a2(0.1, 0.25, 3), 1366272.0 / 11292239.0, 1e-15);
+  EXPECT_NEAR(isotropic_white_noise_a2(0.9, 0.25, 2), 43264.0 / 23782143.0, 1e-15);
 }
 
 /// Hard disks: the table of docs/derivations/sonine-hcs.md ("Hard disks"), printed to 8 decimals by
@@ -133,8 +216,8 @@ TEST(SonineHcs, DisksAgreeWithTheDerivationsTable) {
     EXPECT_NEAR(hcs_a2_nonlinear(r.alpha, 2), r.nl1, 5e-9);
     EXPECT_NEAR(hcs_second_sonine(r.alpha, 2).a2, r.a2_2s, 5e-9);
     EXPECT_NEAR(hcs_second_sonine(r.alpha, 2).a3, r.a3_2s, 5e-9);
-    EXPECT_NEAR(hcs_second_sonine_nonlinear(r.alpha, 2).a2, r.a2_2s_nl, 5e-9);
-    EXPECT_NEAR(hcs_second_sonine_nonlinear(r.alpha, 2).a3, r.a3_2s_nl, 5e-9);
+    EXPECT_NEAR(second_sonine_nonlinear(r.alpha, SonineState::cooling, 2).a2, r.a2_2s_nl, 5e-9);
+    EXPECT_NEAR(second_sonine_nonlinear(r.alpha, SonineState::cooling, 2).a3, r.a3_2s_nl, 5e-9);
   }
   // mu_2 of disks is half that of spheres at every (a2, a3) (docs/derivations/sonine-hcs.md).
   EXPECT_EQ(hcs_collisional_moments(0.6, 0.05, -0.02, 2).mu2, 0.5 * hcs_collisional_moments(0.6, 0.05, -0.02).mu2);
@@ -152,12 +235,12 @@ TEST(SonineHcs, ValuesFromExactDerivation) {
   EXPECT_NEAR(hcs_a2_nonlinear(0.5), 0.052964085534803122, 1e-14);
   EXPECT_NEAR(hcs_a2_nonlinear(0.8), -0.012567649049597848, 1e-14);
   EXPECT_NEAR(hcs_a2_nonlinear(0.9), -0.014556783643851375, 1e-14);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(0.5).a2, 0.044982735426126897, 1e-14);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(0.5).a3, -0.018549219057136016, 1e-14);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(0.8).a2, -0.014082511968051245, 1e-14);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(0.8).a3, -0.0047670808508758306, 1e-14);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(0.9).a2, -0.015670213193269382, 1e-14);
-  EXPECT_NEAR(hcs_second_sonine_nonlinear(0.9).a3, -0.0039145621948056657, 1e-14);
+  EXPECT_NEAR(second_sonine_nonlinear(0.5, SonineState::cooling).a2, 0.044982735426126897, 1e-14);
+  EXPECT_NEAR(second_sonine_nonlinear(0.5, SonineState::cooling).a3, -0.018549219057136016, 1e-14);
+  EXPECT_NEAR(second_sonine_nonlinear(0.8, SonineState::cooling).a2, -0.014082511968051245, 1e-14);
+  EXPECT_NEAR(second_sonine_nonlinear(0.8, SonineState::cooling).a3, -0.0047670808508758306, 1e-14);
+  EXPECT_NEAR(second_sonine_nonlinear(0.9, SonineState::cooling).a2, -0.015670213193269382, 1e-14);
+  EXPECT_NEAR(second_sonine_nonlinear(0.9, SonineState::cooling).a3, -0.0039145621948056657, 1e-14);
 }
 
 TEST(SonineHcs, CoolingRateFactorIsMu2Ratio) {

@@ -67,19 +67,32 @@ MomentPoly mu6_poly(double al, int d) noexcept {
           -3.0 * p * (280.0 * a5 - 280.0 * a4 - 860.0 * a3 + 2396.0 * a2 + 1193.0 * a - 3113.0) / 262144.0};
 }
 
-/// The HCS conditions mu_p = (p/d) mu_2 <c^p> with <c^4> = d(d+2)/4 (1 + a2), <c^6> = d(d+2)(d+4)/8
-/// (1 + 3 a2 - a3): E4 = mu_4 - f4 mu_2 (1 + a2), E6 = mu_6 - f6 mu_2 (1 + 3 a2 - a3), f4 = d + 2 (5 for
-/// spheres, 4 for disks), f6 = 3 (d + 2)(d + 4) / 4 (26.25, 18).
+/// The stationarity conditions E4 = mu_4 - f4 mu_2 g4 = 0, E6 = mu_6 - f6 mu_2 g6 = 0, f4 = d + 2 (5 for
+/// spheres, 4 for disks), f6 = 3 (d + 2)(d + 4) / 4 (26.25, 18), with <c^4> = d(d+2)/4 (1 + a2) and <c^6> =
+/// d(d+2)(d+4)/8 (1 + 3 a2 - a3):
+///  - the cooling state, mu_p = (p/d) mu_2 <c^p>: g4 = 1 + a2, g6 = 1 + 3 a2 - a3;
+///  - white noise, mu_p = (p (p + d - 2) / d) mu_2 <c^(p - 2)> (the noise term (xi/2) Lap_c F, xi = mu_2 / d,
+///    against c^p): g4 = 1, g6 = 1 + a2 (docs/derivations/sonine-hcs.md, "White noise").
 double f4(int d) noexcept { return d + 2.0; }
 double f6(int d) noexcept { return 3.0 * (d + 2.0) * (d + 4.0) / 4.0; }
 
-/// HCS residuals E4, E6 (units of sqrt(2 pi)).
+/// g4, g6 and their derivatives in a2 (x) and a3 (y); g4 does not depend on a3.
+struct StateWeights {
+  double g4, g4x, g6, g6x, g6y;
+};
+StateWeights state_weights(SonineState state, double a2, double a3) noexcept {
+  if (state == SonineState::cooling) return {1.0 + a2, 1.0, 1.0 + 3.0 * a2 - a3, 3.0, -1.0};
+  return {1.0, 0.0, 1.0 + a2, 1.0, 0.0};
+}
+
+/// Residuals E4, E6 (units of sqrt(2 pi)).
 struct Residual {
   double e4, e6;
 };
-Residual hcs_residual(double alpha, double a2, double a3, int d) noexcept {
+Residual residual(double alpha, double a2, double a3, int d, SonineState state) noexcept {
   const SonineMoments m = hcs_collisional_moments(alpha, a2, a3, d);
-  return {m.mu4 - f4(d) * m.mu2 * (1.0 + a2), m.mu6 - f6(d) * m.mu2 * (1.0 + 3.0 * a2 - a3)};
+  const StateWeights g = state_weights(state, a2, a3);
+  return {m.mu4 - f4(d) * m.mu2 * g.g4, m.mu6 - f6(d) * m.mu2 * g.g6};
 }
 
 /// sum_k c[k] a^k, from the highest power down (the order the closed forms below were written in); the
@@ -158,21 +171,34 @@ SecondSonine hcs_second_sonine(double alpha, int dimension) noexcept {
   return {16.0 * (1.0 - alpha) * n2 / d, 128.0 * (1.0 - alpha) * n3 / d};
 }
 
-SecondSonine hcs_second_sonine_nonlinear(double alpha, int dimension) noexcept {
-  SecondSonine s = hcs_second_sonine(alpha, dimension);
+SecondSonine second_sonine_linear(double alpha, SonineState state, int dimension) noexcept {
+  // E_p linearised about (0, 0): A_p + B_p a2 + C_p a3 with A = mu_p.c00 - f mu_2.c00 (every g is 1 there),
+  // B = mu_p.c10 - f (mu_2.c10 + mu_2.c00 g_x), C = mu_p.c01 - f (mu_2.c01 + mu_2.c00 g_y); Cramer's rule.
+  const MomentPoly m2 = mu2_poly(alpha, dimension), m4 = mu4_poly(alpha, dimension), m6 = mu6_poly(alpha, dimension);
+  const StateWeights g = state_weights(state, 0.0, 0.0);
+  const double h4 = f4(dimension), h6 = f6(dimension);
+  const double a4 = m4.c00 - h4 * m2.c00, b4 = m4.c10 - h4 * (m2.c10 + m2.c00 * g.g4x), c4 = m4.c01 - h4 * m2.c01;
+  const double a6 = m6.c00 - h6 * m2.c00, b6 = m6.c10 - h6 * (m2.c10 + m2.c00 * g.g6x),
+               c6 = m6.c01 - h6 * (m2.c01 + m2.c00 * g.g6y);
+  const double det = b4 * c6 - c4 * b6;
+  return {(c4 * a6 - a4 * c6) / det, (a4 * b6 - b4 * a6) / det};
+}
+
+SecondSonine second_sonine_nonlinear(double alpha, SonineState state, int dimension) noexcept {
+  SecondSonine s = second_sonine_linear(alpha, state, dimension);
   // Newton on (E4, E6) = 0; the Jacobian is analytic since the moments are quadratic in (a2, a3).
   const MomentPoly m2 = mu2_poly(alpha, dimension), m4 = mu4_poly(alpha, dimension), m6 = mu6_poly(alpha, dimension);
-  const double g4 = f4(dimension), g6 = f6(dimension);
+  const double h4 = f4(dimension), h6 = f6(dimension);
   for (int it = 0; it < 50; ++it) {
-    const Residual r = hcs_residual(alpha, s.a2, s.a3, dimension);
+    const Residual r = residual(alpha, s.a2, s.a3, dimension, state);
     const double x = s.a2, y = s.a3;
+    const StateWeights g = state_weights(state, x, y);
     const double mu2 = m2(x, y);
     const double d2x = m2.c10 + 2.0 * m2.c20 * x + m2.c11 * y, d2y = m2.c01 + m2.c11 * x + 2.0 * m2.c02 * y;
     const double d4x = m4.c10 + 2.0 * m4.c20 * x + m4.c11 * y, d4y = m4.c01 + m4.c11 * x + 2.0 * m4.c02 * y;
     const double d6x = m6.c10 + 2.0 * m6.c20 * x + m6.c11 * y, d6y = m6.c01 + m6.c11 * x + 2.0 * m6.c02 * y;
-    const double c4 = g4 * (1.0 + x), c6 = g6 * (1.0 + 3.0 * x - y);
-    const double j11 = d4x - g4 * mu2 - c4 * d2x, j12 = d4y - c4 * d2y;
-    const double j21 = d6x - 3.0 * g6 * mu2 - c6 * d2x, j22 = d6y + g6 * mu2 - c6 * d2y;
+    const double j11 = d4x - h4 * (g.g4x * mu2 + g.g4 * d2x), j12 = d4y - h4 * g.g4 * d2y;
+    const double j21 = d6x - h6 * (g.g6x * mu2 + g.g6 * d2x), j22 = d6y - h6 * (g.g6y * mu2 + g.g6 * d2y);
     const double det = j11 * j22 - j12 * j21;
     const double dx = (r.e4 * j22 - r.e6 * j12) / det, dy = (j11 * r.e6 - j21 * r.e4) / det;
     s.a2 -= dx;
@@ -189,6 +215,11 @@ double hcs_cooling_rate_factor(double a2, double a3) noexcept {
 
 double hcs_a2_model_error(double alpha, int dimension) noexcept {
   return std::fabs(hcs_second_sonine(alpha, dimension).a2 - hcs_a2(alpha, dimension));
+}
+
+double white_noise_a2_model_error(double alpha, int dimension) noexcept {
+  return std::fabs(second_sonine_linear(alpha, SonineState::white_noise, dimension).a2 -
+                   white_noise_a2(alpha, dimension));
 }
 
 }  // namespace granmc::theory

@@ -47,6 +47,13 @@ double maxwell_temperature_splitting(double t, double dt, double temperature0, d
 /// (alpha = 1/2: 18/167 = 0.1078).
 double maxwell_white_noise_a2(double alpha, int dimension = 3) noexcept;
 
+/// The first-Sonine steady a2 of the kernel B = rate |u|^lambda with e uniform on the sphere (circle for disks)
+/// heated by white noise (docs/derivations/vhs-white-noise-a2.md): 16 (1 - alpha) N / D, rational in alpha,
+/// lambda and d. Exact for lambda = 0 (maxwell_white_noise_a2); lambda = 1, d = 3 is van Noije and Ernst's
+/// hard-sphere a2 (white_noise_a2 of theory/sonine.hpp); for VHS disks and spheres in between. Not for hard
+/// disks, which do not scatter e uniformly (white_noise_a2 with d = 2).
+double isotropic_white_noise_a2(double alpha, double lambda, int dimension = 3) noexcept;
+
 /// <|u|^p> over pairs of independent Maxwellian unit-mass particles at temperature T in d dimensions:
 /// (4 T)^{p/2} Gamma((d + p)/2) / Gamma(d/2).
 double maxwellian_relative_speed_moment(double p, double temperature, int dimension = 3) noexcept;
@@ -55,8 +62,8 @@ double maxwellian_relative_speed_moment(double p, double temperature, int dimens
 ///   2 beta = |S^(d-1)| rate (1 - alpha^2) <1 - mu> <|u|^{2+lambda}> / (8 d)
 /// (001 eq. 15 for d = 3: (1 - alpha^2)/24 4 pi rate <|u|^{2+lambda}>), <1 - mu> = 1 for e uniform and 4/3 for
 /// hard disks (tests/test_collision_rule.cpp, HardDiskScattering), with a Maxwellian closure, times the first-Sonine
-/// factor (1 + 3 a2 / 16) for hard cores (lambda = 1; pass a2 = 0 for the closure alone). Exact for lambda = 0 (2 beta
-/// / kappa).
+/// factor (1 + lambda (lambda + 2) a2 / 16) of <|u|^{2+lambda}> (3/16 for hard cores; pass a2 = 0 for the closure
+/// alone). Exact for lambda = 0 (2 beta / kappa).
 double white_noise_steady_temperature(double lambda, double rate, double alpha, double beta, double a2,
                                       int dimension = 3) noexcept;
 
