@@ -286,8 +286,7 @@ def theoretical(th, y):
         m = th.get("mixture")
         if m:
             out["Maxwellian"] = [m["temperature_ratio_maxwell"]]
-            if "temperature_ratio_sonine" in m:  # spheres only
-                out["first Sonine"] = [m["temperature_ratio_sonine"]]
+            out["first Sonine"] = [m["temperature_ratio_sonine"]]
     elif y == "intruder_temperature_ratio":
         i = th.get("intruder", {})
         if "temperature_ratio_exact" in i:

@@ -60,17 +60,11 @@ void add_scaled_state(const Scene& scene, const std::vector<double>& /*times*/, 
 void add_mixture(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j, nlohmann::json& applies) {
   const auto m = theory::mixture_state(scene);
   if (!m) return;
-  if (!m->first_sonine) {  // disks: the Maxwellian balance only
-    applies.push_back(
-        "binary mixture of disks, HCS or HSS: Maxwellian temperature ratio (docs/derivations/mixture-hcs.md, "
-        "\"Disks\")");
-    j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell}};
-    return;
-  }
-  applies.push_back("binary mixture, HCS or HSS: temperature ratio and a2_i (docs/derivations/mixture-hcs.md)");
+  applies.push_back(std::string("binary mixture") + (scene.run.dimension == 2 ? " of disks" : "") +
+                    ", HCS or HSS: temperature ratio and a2_i (docs/derivations/mixture-hcs.md)");
   j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell},
-                  {"temperature_ratio_sonine", m->first_sonine->gamma},
-                  {"a2_sonine", {m->first_sonine->a2[0], m->first_sonine->a2[1]}}};
+                  {"temperature_ratio_sonine", m->first_sonine.gamma},
+                  {"a2_sonine", {m->first_sonine.a2[0], m->first_sonine.a2[1]}}};
 }
 
 /// The intruder's bath and its exact T/T_B where known (002 eq. 22).

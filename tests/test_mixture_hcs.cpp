@@ -267,25 +267,37 @@ TEST(MixtureHcs, ExtremeMassRatiosStaySane) {
   }
 }
 
-TEST(MixtureHcs, ValuesFromExactDerivation) {
-  // mixture_hcs.py "reference values" (independent Python implementation of the same closed forms).
-  struct Case {
-    double mu, omega, delta, alpha, gm, gs, a0, a1;
-  };
-  for (const Case& c :
-       {Case{2, 1, 1, 0.5, 1.37042036301277, 1.36176350417998, 0.0713790013630778, 0.0355835809202199},
-        Case{2, 1, 1, 0.8, 1.12566811848768, 1.12076338803179, -0.00554339143179936, -0.0153400740499466},
-        Case{10, 1, 2, 0.5, 3.82639631508244, 3.80051147119688, 0.0545383083278067, 0.00901922556185767},
-        Case{0.1, 1, 2, 0.7, 0.322432911895166, 0.323050042265275, 0.00853174268111041, 0.0328512124448888},
-        Case{4, 1, 0.25, 0.6, 1.98780053596349, 1.9641354564311, 0.082611972775386, 0.0206348326256949},
-        Case{1000, 1, 1, 0.0, 1000.0, 979.454395844151, 0.195999272095863, 0.116139984712178}}) {
-    const MixtureParameters mp = mixture_from_ratios(c.mu, c.omega, c.delta, c.alpha);
+namespace {
+
+/// A line of mixture_hcs.py's "reference values": the mixture and its Maxwellian and first-Sonine state.
+struct ReferenceState {
+  double mu, omega, delta, alpha, gm, gs, a0, a1;
+};
+
+void expect_reference_states(std::initializer_list<ReferenceState> states, int dimension) {
+  for (const ReferenceState& c : states) {
+    MixtureParameters mp = mixture_from_ratios(c.mu, c.omega, c.delta, c.alpha);
+    mp.dimension = dimension;
     EXPECT_NEAR(temperature_ratio_maxwell(mp), c.gm, 1e-12 * c.gm);
     const MixtureSonine s = mixture_first_sonine(mp);
     EXPECT_NEAR(s.gamma, c.gs, 1e-12 * c.gs);
     EXPECT_NEAR(s.a2[0], c.a0, 1e-12);
     EXPECT_NEAR(s.a2[1], c.a1, 1e-12);
   }
+}
+
+}  // namespace
+
+TEST(MixtureHcs, ValuesFromExactDerivation) {
+  // mixture_hcs.py "reference values" (independent Python implementation of the same closed forms).
+  expect_reference_states(
+      {{2, 1, 1, 0.5, 1.37042036301277, 1.36176350417998, 0.0713790013630778, 0.0355835809202199},
+       {2, 1, 1, 0.8, 1.12566811848768, 1.12076338803179, -0.00554339143179936, -0.0153400740499466},
+       {10, 1, 2, 0.5, 3.82639631508244, 3.80051147119688, 0.0545383083278067, 0.00901922556185767},
+       {0.1, 1, 2, 0.7, 0.322432911895166, 0.323050042265275, 0.00853174268111041, 0.0328512124448888},
+       {4, 1, 0.25, 0.6, 1.98780053596349, 1.9641354564311, 0.082611972775386, 0.0206348326256949},
+       {1000, 1, 1, 0.0, 1000.0, 979.454395844151, 0.195999272095863, 0.116139984712178}},
+      3);
 }
 
 TEST(MixtureHcs, CollisionalMomentsFromExactDerivation) {
@@ -302,6 +314,41 @@ TEST(MixtureHcs, CollisionalMomentsFromExactDerivation) {
         Case{1, 0, 4, 24.136563972276534}, Case{0, 0, 2, -2.0029355643294852}, Case{0, 0, 4, -22.383912975298738}}) {
     EXPECT_NEAR(collisional_moment(mp, c.i, c.j, c.p, 1.3, 1.0, 0.3, -0.2), c.value, 1e-13 * std::abs(c.value))
         << c.i << c.j << " p = " << c.p;
+  }
+}
+
+TEST(MixtureHcs, DisksFromExactDerivation) {
+  // `mixture_hcs.py --dimension 2` "reference values" and Psi_p^ij (unit n_j sigma_ij chi_ij); its moments agree
+  // with the one-component ones of sonine_hcs.py --dimension 2 and, in --mc, with Monte Carlo on the circle
+  // (docs/derivations/mixture-hcs.md, "Disks").
+  expect_reference_states(
+      {{2, 1, 1, 0.5, 1.37042036301277, 1.36128966272593, 0.106917410401724, 0.0603818920589719},
+       {2, 1, 1, 0.8, 1.12566811848768, 1.11830243835068, -0.0104226821409081, -0.0242357357340153},
+       {10, 1, 2, 0.5, 3.82639631508244, 3.79735123081881, 0.0829930539866959, 0.0201745707170987},
+       {0.1, 1, 2, 0.7, 0.322432911895166, 0.322909251347765, 0.0153824385941323, 0.0481380369078656},
+       {4, 1, 0.25, 0.6, 1.98780053596349, 1.96165194985678, 0.115385846823711, 0.036085082917013},
+       {1000, 1, 1, 0.0, 1000.0, 980.048252543065, 0.278227556848131, 0.19836878403519}},
+      2);
+  MixtureParameters mp = mixture_from_ratios(2.0, 1.0, 1.0, 0.7);
+  mp.dimension = 2;
+  struct Moment {
+    int i, j, p;
+    double value;
+  };
+  for (const Moment& c : {Moment{0, 1, 2, -1.6603535238256037}, Moment{0, 1, 4, -12.752398784764361},
+                          Moment{1, 0, 2, -0.25374622180089157}, Moment{1, 0, 4, 9.9049141578685085},
+                          Moment{0, 0, 2, -1.0014677821647426}, Moment{0, 0, 4, -8.3723242754177683}}) {
+    EXPECT_NEAR(collisional_moment(mp, c.i, c.j, c.p, 1.3, 1.0, 0.3, -0.2), c.value, 1e-13 * std::abs(c.value))
+        << c.i << c.j << " p = " << c.p;
+  }
+  // Identical disks: the one-component cooling state of disks (van Noije and Ernst, d = 2).
+  for (const double alpha : {0.3, 0.6, 0.9}) {
+    MixtureParameters same = mixture_from_ratios(1.0, 1.0, 0.5, alpha);
+    same.dimension = 2;
+    const MixtureSonine t = mixture_first_sonine(same);
+    EXPECT_NEAR(t.gamma, 1.0, 1e-12);
+    EXPECT_NEAR(t.a2[0], hcs_a2(alpha, 2), 1e-12);
+    EXPECT_NEAR(t.a2[1], hcs_a2(alpha, 2), 1e-12);
   }
 }
 

@@ -49,8 +49,15 @@ u, b, ai, aj, alpha = sp.symbols("u b a_i a_j alpha")
 w1s, w2s = sp.symbols("w1 w2")  # stand for 1/u and 1/(1-u) inside the ring
 
 
-def S2(x):  # L^(1/2)_2(x)
-    return QQ(1, 2) * x**2 - QQ(5, 2) * x + QQ(15, 8)
+# --dimension 2: hard disks (docs/derivations/mixture-hcs.md, "Disks"): two Cartesian components (x, z), the
+# sigma integral 2 pi times the integrand at sigma = z, S2 = L^(d/2-1)_2.
+DIM = 2 if "--dimension" in sys.argv and sys.argv[sys.argv.index("--dimension") + 1] == "2" else 3
+SPHERE = 4 if DIM == 3 else 2  # |S^(d-1)| / pi
+F4 = 2 * (DIM + 2)             # <v^4>_i / (theta_i <v^2>_i) = 2 (d + 2) (1 + a_i): 10 spheres, 8 disks
+
+
+def S2(x):  # L^(d/2-1)_2(x)
+    return QQ(1, 2) * x**2 - QQ(DIM + 2, 2) * x + QQ(DIM * (DIM + 2), 8)
 
 
 def dfact(n):  # (n)!! for odd n, (-1)!! = 1
@@ -61,10 +68,14 @@ def dfact(n):  # (n)!! for odd n, (-1)!! = 1
     return r
 
 
-v1 = (Gx + U * gx, Gy + U * gy, Gz + U * gz)
-v2 = (Gx - (1 - U) * gx, Gy - (1 - U) * gy, Gz - (1 - U) * gz)
-v1p = (v1[0], v1[1], v1[2] - B * gz)          # sig = z
-sq = lambda v: v[0]**2 + v[1]**2 + v[2]**2
+if DIM == 3:
+    v1 = (Gx + U * gx, Gy + U * gy, Gz + U * gz)
+    v2 = (Gx - (1 - U) * gx, Gy - (1 - U) * gy, Gz - (1 - U) * gz)
+else:  # disks: the plane (x, z)
+    v1 = (Gx + U * gx, Gz + U * gz)
+    v2 = (Gx - (1 - U) * gx, Gz - (1 - U) * gz)
+v1p = v1[:-1] + (v1[-1] - B * gz,)            # sig = z
+sq = lambda v: sum(c**2 for c in v)
 x1 = sq(v1) * W1 * QQ(1, 2)                    # v1^2 / (2 theta_i) in units of s^2: |v1-hat|^2 / (2u)
 x2 = sq(v2) * W2 * QQ(1, 2)                    # v2^2 / (2 theta_j): |v2-hat|^2 / (2(1-u))
 WEIGHT = (1 + AI * S2(x1)) * (1 + AJ * S2(x2))
@@ -169,14 +180,15 @@ def pair_data(mix, i, j, T):
     uu = th[i] / s2
     bb = mix.m[j] / (mix.m[i] + mix.m[j]) * (1 + mix.alpha)
     sij = 0.5 * (mix.sig[i] + mix.sig[j])
-    w = mix.n[j] * sij**2 * mix.chi[i][j]
+    w = mix.n[j] * sij ** (DIM - 1) * mix.chi[i][j]
     return uu, bb, math.sqrt(s2), w
 
 
 def zeta_and_residual(NUM, mix, T, a, order="linear"):
     """Partial cooling rates zeta_i and fourth-moment residuals E_i (both divided by common constants):
-         zeta_i = -(2 sqrt(2 pi)/3) sum_j n_j sigma_ij^2 chi_ij s_ij P2^ij / u_ij,
-         E_i    = sum_j n_j sigma_ij^2 chi_ij s_ij^5 [P4^ij - 10 u_ij (1 + a_i) P2^ij].
+         zeta_i = -(SPHERE sqrt(2 pi) / (2 d)) sum_j n_j sigma_ij^(d-1) chi_ij s_ij P2^ij / u_ij,
+         E_i    = sum_j n_j sigma_ij^(d-1) chi_ij s_ij^5 [P4^ij - 2 (d + 2) u_ij (1 + a_i) P2^ij]
+       (spheres: 2 sqrt(2 pi) / 3 and 10 u_ij).
     order = 'linear': zeta to first order in a, E_i linearised in a; 'exact': no linearisation."""
     z = [0.0, 0.0]
     E = [0.0, 0.0]
@@ -189,12 +201,12 @@ def zeta_and_residual(NUM, mix, T, a, order="linear"):
             if order == "linear":
                 P2v = p2[(0, 0)] + p2[(1, 0)] * ai_ + p2[(0, 1)] * aj_
                 P4v = p4[(0, 0)] + p4[(1, 0)] * ai_ + p4[(0, 1)] * aj_
-                ev = P4v - 10 * uu * (p2[(0, 0)] * (1 + ai_) + p2[(1, 0)] * ai_ + p2[(0, 1)] * aj_)
+                ev = P4v - F4 * uu * (p2[(0, 0)] * (1 + ai_) + p2[(1, 0)] * ai_ + p2[(0, 1)] * aj_)
             else:
                 P2v = p2[(0, 0)] + p2[(1, 0)] * ai_ + p2[(0, 1)] * aj_ + p2[(1, 1)] * ai_ * aj_
                 P4v = p4[(0, 0)] + p4[(1, 0)] * ai_ + p4[(0, 1)] * aj_ + p4[(1, 1)] * ai_ * aj_
-                ev = P4v - 10 * uu * (1 + ai_) * P2v
-            z[i] += -(2 * math.sqrt(2 * math.pi) / 3) * w * s * P2v / uu
+                ev = P4v - F4 * uu * (1 + ai_) * P2v
+            z[i] += -(SPHERE * math.sqrt(2 * math.pi) / (2 * DIM)) * w * s * P2v / uu
             E[i] += w * s**5 * ev
     return z, E
 
@@ -329,6 +341,20 @@ def tables(NUM):
                   f"{f5(gm / g0m)} | {f5(gs / g0s)} | {f5(2 * a[0])} | {f5(2 * a[1])} |")
 
 
+def tables_disks(NUM):
+    """The dilute curves of `make fig-mixture-disks` (000 Fig. 3 in the plane): Maxwellian and first-Sonine gamma."""
+    alphas = [0.5, 0.6, 0.7, 0.8, 0.9, 0.95]
+    print("\n### Disks, delta = 2, phi = 0\n")
+    print("| curve | alpha | gamma Maxwell | gamma Sonine | c_1 | c_2 |")
+    print("|---|---|---|---|---|---|")
+    for name, mu, omega in (("mu = 1/10", 0.1, 1), ("mu = 2", 2, 1), ("mu = 10", 10, 1), ("mu = 10, omega = 2", 10, 2)):
+        for al in alphas:
+            mix = Mixture(mu, omega, 2, al)
+            gm, _ = hcs(NUM, mix, "maxwell")
+            gs, a = hcs(NUM, mix, "linear")
+            print(f"| {name} | {al} | {f5(gm)} | {f5(gs)} | {f5(2 * a[0])} | {f5(2 * a[1])} |")
+
+
 # ---------------------------------------------------------------------------------------------------
 # Independent numerical checks of the collisional moments (no G, g decomposition, no symbolic algebra)
 # ---------------------------------------------------------------------------------------------------
@@ -349,12 +375,12 @@ def exact_psi(NUM, mi, mj, Ti, Tj, al):
     out = {}
     for p, name in ((2, "P2"), (4, "P4")):
         for k in KEYS:
-            out[(p, k)] = 2 * math.sqrt(2 * math.pi) * s2 ** ((p + 1) / 2) * NUM[name][k](uu, bb)
+            out[(p, k)] = SPHERE / 2 * math.sqrt(2 * math.pi) * s2 ** ((p + 1) / 2) * NUM[name][k](uu, bb)
     return out
 
 
 def s2n(x):
-    return 0.5 * x * x - 2.5 * x + 15 / 8
+    return 0.5 * x * x - (DIM + 2) / 2 * x + DIM * (DIM + 2) / 8
 
 
 def quadrature_psi(mi, mj, Ti, Tj, al, n_lag=12, n_ang=64, n_rad=160, rmax=16.0):
@@ -395,16 +421,16 @@ def quadrature_psi(mi, mj, Ti, Tj, al, n_lag=12, n_ang=64, n_rad=160, rmax=16.0)
 
 
 def mc_psi(mi, mj, Ti, Tj, al, nsamp=20_000_000, batch=2_000_000, seed=7):
-    """Plain Monte Carlo: v1 ~ N(0, T_i/m_i), v2 ~ N(0, T_j/m_j), sig uniform on the sphere."""
+    """Plain Monte Carlo: v1 ~ N(0, T_i/m_i), v2 ~ N(0, T_j/m_j), sig uniform on the sphere (circle for disks)."""
     rng = np.random.default_rng(seed)
     thi, thj = Ti / mi, Tj / mj
     bb = mj / (mi + mj) * (1 + al)
     acc = {(p, k): [0.0, 0.0] for p in (2, 4) for k in KEYS}
     n = 0
     while n < nsamp:
-        c1 = rng.normal(scale=math.sqrt(thi), size=(batch, 3))
-        c2 = rng.normal(scale=math.sqrt(thj), size=(batch, 3))
-        s = rng.normal(size=(batch, 3))
+        c1 = rng.normal(scale=math.sqrt(thi), size=(batch, DIM))
+        c2 = rng.normal(scale=math.sqrt(thj), size=(batch, DIM))
+        s = rng.normal(size=(batch, DIM))
         s /= np.linalg.norm(s, axis=1)[:, None]
         sg = np.einsum("ij,ij->i", s, c1 - c2)
         th = np.where(sg > 0, sg, 0.0)
@@ -417,7 +443,7 @@ def mc_psi(mi, mj, Ti, Tj, al, nsamp=20_000_000, batch=2_000_000, seed=7):
             h = p // 2
             d = y1**h - x1**h
             for k in KEYS:
-                v = 4 * math.pi * th * w[k] * d
+                v = SPHERE * math.pi * th * w[k] * d
                 acc[(p, k)][0] += float(v.sum())
                 acc[(p, k)][1] += float((v * v).sum())
         n += batch
@@ -443,6 +469,12 @@ def derive():
 
 def checks(P2, P4, Q):
     print("\n---- exact checks")
+    if DIM == 3:
+        checks_spheres(P2)
+    checks_any_dimension(P2, P4, Q)
+
+
+def checks_spheres(P2):
     # (1) Sonine normalisation of species i
     th, v, a = sp.symbols("theta v a", positive=True)
     x = v**2 / (2 * th)
@@ -467,6 +499,10 @@ def checks(P2, P4, Q):
           "  == (4 sqrt(pi)/3)(1-alpha^2) sqrt(T/m):",
           sp.simplify(one - 4 * sp.sqrt(sp.pi) / 3 * (1 - al**2) * sp.sqrt(T_ / m_)) == 0)
 
+
+def checks_any_dimension(P2, P4, Q):
+    mi, mj, al = sp.symbols("m_i m_j alpha", positive=True)
+    M = mi + mj
     # (3) elastic, equal temperatures: Maxwellians are collision invariants for every p
     eq = {u: mj / M, b: 2 * mj / M}
     print("alpha = 1, T_i = T_j: P2 = P4 = 0:",
@@ -483,15 +519,16 @@ def checks(P2, P4, Q):
     print("pair energy balance (exact in a_i, a_j, alpha):", sp.simplify(lhs - rhs) == 0,
           "   Q symmetric under i <-> j:", sp.simplify(Q - Qji) == 0)
 
-    # (5) one component: u = 1/2, b = (1 + alpha)/2, a_i = a_j = a  ->  mu_p of sonine_hcs.py (a3 = 0):
-    #     mu_p / sqrt(2 pi) = -2 P_p   (Psi_p = 2 sqrt(2 pi) s^(p+1) P_p, s = v0 = 1 in the units of mu_p)
+    # (5) one component: u = 1/2, b = (1 + alpha)/2, a_i = a_j = a  ->  mu_p of sonine_hcs.py (a3 = 0, run in
+    #     the same dimension): mu_p / sqrt(2 pi) = -(SPHERE / 2) P_p   (Psi_p = (SPHERE / 2) sqrt(2 pi) s^(p+1) P_p,
+    #     s = v0 = 1 in the units of mu_p)
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     import sonine_hcs as one_comp
     a2s, a3s = one_comp.a2, one_comp.a3
     for p, P in ((2, P2), (4, P4)):
         mu_p = one_comp.to_sympy(one_comp.collision_moment(p)).subs(a3s, 0)
-        mine = -2 * P.subs({u: sp.Rational(1, 2), b: (1 + one_comp.alpha) / 2, ai: a2s, aj: a2s})
-        print(f"one component: -2 P{p} == mu_{p} of sonine_hcs.py (incl. a2^2):", sp.expand(mine - mu_p) == 0)
+        mine = -sp.Rational(SPHERE, 2) * P.subs({u: sp.Rational(1, 2), b: (1 + one_comp.alpha) / 2, ai: a2s, aj: a2s})
+        print(f"one component: -{SPHERE // 2} P{p} == mu_{p} of sonine_hcs.py (incl. a2^2):", sp.expand(mine - mu_p) == 0)
 
     # (6) identical species, any densities: the linearised HCS system gives a_1 = a_2 = van Noije-Ernst
     n1, n2, a1, a2 = sp.symbols("n1 n2 a1 a2", positive=True)
@@ -500,20 +537,20 @@ def checks(P2, P4, Q):
     c4 = {k: v.subs(half) for k, v in coeffs(P4).items()}
     def Elin(own, other):  # pair contribution, linearised
         return (c4[(0, 0)] + c4[(1, 0)] * own + c4[(0, 1)] * other
-                - 5 * (c2[(0, 0)] * (1 + own) + c2[(1, 0)] * own + c2[(0, 1)] * other))
+                - (DIM + 2) * (c2[(0, 0)] * (1 + own) + c2[(1, 0)] * own + c2[(0, 1)] * other))
     E1 = n1 * Elin(a1, a1) + n2 * Elin(a1, a2)
     E2 = n2 * Elin(a2, a2) + n1 * Elin(a2, a1)
     sol = sp.solve([E1, E2], [a1, a2], dict=True)[0]
-    vne_ = 16 * (1 - alpha) * (1 - 2 * alpha**2) / (81 - 17 * alpha + 30 * alpha**2 * (1 - alpha))
+    vne_ = 16 * (1 - alpha) * (1 - 2 * alpha**2) / (9 + 24 * DIM - alpha * (41 - 8 * DIM) + 30 * alpha**2 * (1 - alpha))
     print("identical species, any n1, n2: a1 = a2 = vNE:",
           sp.simplify(sol[a1] - vne_) == 0, sp.simplify(sol[a2] - vne_) == 0)
 
     # (7) linearised fourth-moment coefficients Q^ij (printed for the note / C++)
-    print("\nLinearised E_i pair term  P4 - 10 u (1 + a_i) P2  ->  e0 + ei a_i + ej a_j:")
+    print(f"\nLinearised E_i pair term  P4 - {F4} u (1 + a_i) P2  ->  e0 + ei a_i + ej a_j:")
     cc2, cc4 = coeffs(P2), coeffs(P4)
-    e0 = sp.factor(cc4[(0, 0)] - 10 * u * cc2[(0, 0)])
-    ei = sp.factor(cc4[(1, 0)] - 10 * u * (cc2[(1, 0)] + cc2[(0, 0)]))
-    ej = sp.factor(cc4[(0, 1)] - 10 * u * cc2[(0, 1)])
+    e0 = sp.factor(cc4[(0, 0)] - F4 * u * cc2[(0, 0)])
+    ei = sp.factor(cc4[(1, 0)] - F4 * u * (cc2[(1, 0)] + cc2[(0, 0)]))
+    ej = sp.factor(cc4[(0, 1)] - F4 * u * cc2[(0, 1)])
     print("  e0 =", e0)
     print("  ei =", ei)
     print("  ej =", ej)
@@ -525,6 +562,8 @@ def checks(P2, P4, Q):
 
 def main():
     P2, P4, Q = derive()
+    if "--quad" in sys.argv and DIM == 2:
+        raise SystemExit("--quad integrates over the sphere only; use --mc for disks")
     if "--quad" in sys.argv or "--mc" in sys.argv:
         NUM = make_numeric(P2, P4)
         worst = 0.0
@@ -565,9 +604,12 @@ def main():
         thi, thj = sp.Rational(temps[i]) / masses[i], sp.Rational(temps[j]) / masses[j]
         sub = {u: thi / (thi + thj), b: sp.Rational(masses[j], masses[i] + masses[j]) * (1 + al_), ai: avals[i], aj: avals[j]}
         for p, P in ((2, P2), (4, P4)):
-            val = 2 * sp.sqrt(2 * sp.pi) * (thi + thj) ** sp.Rational(p + 1, 2) * P.subs(sub)
+            val = sp.Rational(SPHERE, 2) * sp.sqrt(2 * sp.pi) * (thi + thj) ** sp.Rational(p + 1, 2) * P.subs(sub)
             print(f"Psi_{p}^({i}{j}) at m = (2, 1), T = (1.3, 1), alpha = 0.7, a2 = (0.3, -0.2): {sp.N(val, 17)}")
-    tables(NUM)
+    if DIM == 3:
+        tables(NUM)
+    else:
+        tables_disks(NUM)
 
 
 if __name__ == "__main__":

@@ -56,26 +56,40 @@ PairPoly p2(const Pair& q) {
           3.0 * b * u * u * v * v * (3.0 * b + 10.0 * u - 8.0) / 32.0};
 }
 
-/// Psi_4 = 2 sqrt(2 pi) s^5 P4 (mixture_hcs.py, "P4"):
-///   P4 = -4 b (2u - b)(2b^2 - 4bu + u^2 + 5u)
-///        - a_i b u^2 (-30b^3 + 24b^2 u + 96b^2 + 9bu^2 - 87bu - 132b + 6u^3 - 34u^2 + 128u + 80)/2
-///        - a_j b (1-u)^2 (-30b^3 + 24b^2 u + 9bu^2 - 15bu + 6u^3 - 10u^2)/2
-///        - a_i a_j b u^2 (1-u)^2 (30b^3 + 72b^2 u - 96b^2 + 135bu^2 - 261bu + 132b + 210u^3 - 510u^2 + 384u - 80)/16.
-PairPoly p4(const Pair& q) {
+/// Psi_4 = (|S^(d-1)| / (2 pi)) sqrt(2 pi) s^5 P4 (mixture_hcs.py [--dimension 2], "P4"):
+///   P4 = -4 b (2u - b)(2b^2 - 4bu + u^2 + k0 u)
+///        - a_i b u^2 (-30b^3 + 24b^2 u + 96b^2 + 9bu^2 + k1 bu + k2 b + 6u^3 + k3 u^2 + k4 u + k5)/2
+///        - a_j b (1-u)^2 (-30b^3 + 24b^2 u + 9bu^2 + k6 bu + 6u^3 + k7 u^2)/2
+///        - a_i a_j b u^2 (1-u)^2 (30b^3 + 72b^2 u - 96b^2 + 135bu^2 + k8 bu + k9 b + 210u^3 + k10 u^2 + k11 u
+///          + k12)/16,
+/// the numbers k that depend on d below (P2 is the same in both dimensions).
+struct P4Numbers {
+  double k[13];
+};
+constexpr P4Numbers p4_spheres{{5, -87, -132, -34, 128, 80, -15, -10, -261, 132, -510, 384, -80}};
+constexpr P4Numbers p4_disks{{4, -84, -120, -32, 112, 64, -12, -8, -252, 120, -480, 336, -64}};
+
+PairPoly p4(const Pair& q, const P4Numbers& n) {
+  const double* k = n.k;
   const double u = q.u, v = q.v, b = q.b, b2 = b * b, b3 = b2 * b, u2 = u * u, u3 = u2 * u;
-  const double c00 = -4.0 * b * q.d * (2.0 * b2 - 4.0 * b * u + u2 + 5.0 * u);
+  const double c00 = -4.0 * b * q.d * (2.0 * b2 - 4.0 * b * u + u2 + k[0] * u);
   const double c10 = -b * u2 *
-                     (-30.0 * b3 + 24.0 * b2 * u + 96.0 * b2 + 9.0 * b * u2 - 87.0 * b * u - 132.0 * b + 6.0 * u3 -
-                      34.0 * u2 + 128.0 * u + 80.0) /
+                     (-30.0 * b3 + 24.0 * b2 * u + 96.0 * b2 + 9.0 * b * u2 + k[1] * b * u + k[2] * b + 6.0 * u3 +
+                      k[3] * u2 + k[4] * u + k[5]) /
                      2.0;
   const double c01 =
-      -b * v * v * (-30.0 * b3 + 24.0 * b2 * u + 9.0 * b * u2 - 15.0 * b * u + 6.0 * u3 - 10.0 * u2) / 2.0;
+      -b * v * v * (-30.0 * b3 + 24.0 * b2 * u + 9.0 * b * u2 + k[6] * b * u + 6.0 * u3 + k[7] * u2) / 2.0;
   const double c11 = -b * u2 * v * v *
-                     (30.0 * b3 + 72.0 * b2 * u - 96.0 * b2 + 135.0 * b * u2 - 261.0 * b * u + 132.0 * b + 210.0 * u3 -
-                      510.0 * u2 + 384.0 * u - 80.0) /
+                     (30.0 * b3 + 72.0 * b2 * u - 96.0 * b2 + 135.0 * b * u2 + k[8] * b * u + k[9] * b + 210.0 * u3 +
+                      k[10] * u2 + k[11] * u + k[12]) /
                      16.0;
   return {c00, c10, c01, c11};
 }
+
+PairPoly p4(const Pair& q, const MixtureParameters& mp) { return p4(q, mp.dimension == 2 ? p4_disks : p4_spheres); }
+
+/// |S^(d-1)| / (2 pi): Psi_p = sphere_factor sqrt(2 pi) s^(p+1) P_p (2 spheres, 1 disks).
+double sphere_factor(const MixtureParameters& mp) noexcept { return mp.dimension == 2 ? 1.0 : 2.0; }
 
 /// Linearised HCS quantities at temperatures T: zeta_i = z0[i] + z[i][0] a_0 + z[i][1] a_1 and
 /// E_i = e0[i] + e[i][0] a_0 + e[i][1] a_1 (E_i up to the constant factor 2 sqrt(2 pi)).
@@ -88,19 +102,22 @@ Linearised linearise(const MixtureParameters& mp, const double T[2]) {
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
       const Pair q = pair(mp, i, j, T);
-      const PairPoly P2 = p2(q), P4 = p4(q);
-      // zeta_i = -(m_i / (3 T_i)) sum_j weight Psi_2 = -(2 sqrt(2 pi)/3) sum_j weight s^3 P2 / theta_i.
-      const double cz = -(2.0 * sqrt_2pi / 3.0) * q.weight * q.s * q.s * q.s / q.theta_i;
+      const PairPoly P2 = p2(q), P4 = p4(q, mp);
+      // zeta_i = -(m_i / (d T_i)) sum_j weight Psi_2: -(2 sqrt(2 pi)/3) sum_j weight s^3 P2 / theta_i for
+      // spheres, -(sqrt(2 pi)/2) for disks.
+      const double prefactor = mp.dimension == 2 ? sqrt_2pi / 2.0 : 2.0 * sqrt_2pi / 3.0;
+      const double cz = -prefactor * q.weight * q.s * q.s * q.s / q.theta_i;
       L.z0[i] += cz * P2.c00;
       L.z[i][i] += cz * P2.c10;
       L.z[i][j] += cz * P2.c01;
-      // E_i pair term: weight s^5 [P4 - 10 u (1 + a_i) P2], linearised in (a_i, a_j). Its a-independent part
-      // is -4 b (2u - b)(2b^2 - 4bu + u^2), proportional to d, so exactly 0 at elastic equilibrium.
+      // E_i pair term: weight s^5 [P4 - 2 (d + 2) u (1 + a_i) P2], linearised in (a_i, a_j). Its a-independent
+      // part is -4 b (2u - b)(2b^2 - 4bu + u^2) in both dimensions, proportional to d, so exactly 0 at elastic
+      // equilibrium.
       const double ce = q.weight * std::pow(q.s, 5);
-      const double u = q.u, b = q.b;
+      const double u = q.u, b = q.b, f4 = 2.0 * (mp.dimension + 2.0);
       L.e0[i] += ce * (-4.0 * b * q.d * (2.0 * b * b - 4.0 * b * u + u * u));
-      L.e[i][i] += ce * (P4.c10 - 10.0 * u * (P2.c10 + P2.c00));
-      L.e[i][j] += ce * (P4.c01 - 10.0 * u * P2.c01);
+      L.e[i][i] += ce * (P4.c10 - f4 * u * (P2.c10 + P2.c00));
+      L.e[i][j] += ce * (P4.c01 - f4 * u * P2.c01);
     }
   }
   return L;
@@ -182,9 +199,9 @@ double collisional_moment(const MixtureParameters& mp, int i, int j, int p, doub
   const double T[2] = {T1, T2}, a[2] = {a2_1, a2_2};
   if (p != 2 && p != 4) return std::numeric_limits<double>::quiet_NaN();
   const Pair q = pair(mp, i, j, T);
-  const PairPoly P = p == 2 ? p2(q) : p4(q);
+  const PairPoly P = p == 2 ? p2(q) : p4(q, mp);
   const double val = P.c00 + P.c10 * a[i] + P.c01 * a[j] + P.c11 * a[i] * a[j];
-  return q.weight * 2.0 * sqrt_2pi * std::pow(q.s, p + 1) * val;
+  return q.weight * sphere_factor(mp) * sqrt_2pi * std::pow(q.s, p + 1) * val;
 }
 
 double partial_cooling_rate(const MixtureParameters& mp, int i, double T1, double T2, double a2_1,

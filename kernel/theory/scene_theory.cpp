@@ -55,7 +55,7 @@ std::optional<MixturePrediction> mixture_state(const Scene& scene) {
     }
   }
   p.temperature_ratio_maxwell = temperature_ratio_maxwell(mp);
-  if (!disks) p.first_sonine = mixture_first_sonine(mp);
+  p.first_sonine = mixture_first_sonine(mp);
   return p;
 }
 

@@ -39,9 +39,9 @@ struct ScaledStatePrediction {
 /// Two species: temperature ratio and a2_i (docs/derivations/mixture-hcs.md).
 struct MixturePrediction {
   double temperature_ratio_maxwell = 1.0;  // gamma = T_1/T_2 from zeta_1 = zeta_2, Maxwellians
-  /// gamma with the first-Sonine corrections and the first-Sonine a2_i (c_i = 2 a2_i, 000 Fig. 1); spheres
-  /// only (the a2 terms are those of d = 3).
-  std::optional<MixtureSonine> first_sonine;
+  /// gamma with the first-Sonine corrections and the first-Sonine a2_i (c_i = 2 a2_i, 000 Fig. 1), spheres or
+  /// disks.
+  MixtureSonine first_sonine{};
   double chi[2][2] = {{1.0, 1.0}, {1.0, 1.0}};
 };
 
