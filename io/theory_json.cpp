@@ -200,31 +200,14 @@ void add_enskog_chi(const Scene& scene, const std::vector<double>& /*times*/, nl
   }
 }
 
-/// The first-Sonine Navier-Stokes shear viscosity of a dilute gas of hard disks under uniform shear flow: the
-/// theory is the dilute one of d = 2 (theory/viscosity.hpp, dilute_shear_viscosity), one species.
-void add_disk_viscosity(const Scene& scene, nlohmann::json& j, nlohmann::json& applies) {
-  if (scene.species.size() != 1 || scene.collision.packing_fraction > 0.0 || scene.relaxation) return;
-  const double alpha = scene.collision.restitution[0][0];
-  auto block = [&](theory::ViscosityReference r) {
-    const theory::ShearViscosity s = theory::dilute_shear_viscosity(alpha, 2, r);
-    return nlohmann::json{{"eta_over_eta0", s.total}, {"eta_star", theory::reduced_viscosity_one_species(s.total, 2)}};
-  };
-  j["viscosity"] = {{"reference", "Gaussian-thermostat steady state (000)"},
-                    {"first_sonine", block(theory::ViscosityReference::gaussian_thermostat)},
-                    {"first_sonine_cooling_state", block(theory::ViscosityReference::cooling)},
-                    {"first_sonine_gaussian_thermostat", block(theory::ViscosityReference::gaussian_thermostat)}};
-  applies.push_back(
-      "uniform shear flow, dilute hard disks: first-Sonine Navier-Stokes shear viscosity in d = 2 "
-      "(docs/derivations/viscosity.md, \"Disks\")");
-}
-
-/// The first-Sonine Navier-Stokes shear viscosity of a uniform shear flow of hard spheres (or dilute disks).
+/// The first-Sonine Navier-Stokes shear viscosity of a uniform shear flow of hard spheres or disks (one species;
+/// mixtures of spheres), dilute or Enskog.
 void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j,
                    nlohmann::json& applies) {
   const bool hard_cores = scene.shear_rate != 0.0 && scene.collision.kernel == CollisionKernel::hard_sphere &&
                           !scene.species.empty() && !rough(scene.collision);
-  if (hard_cores && scene.run.dimension == 2) add_disk_viscosity(scene, j, applies);
-  if (hard_cores && scene.run.dimension == 3) {
+  const int d = scene.run.dimension;
+  if (hard_cores) {
     // The reference state whose Navier-Stokes viscosity the run measures: the HSS of 000 (Gaussian thermostat
     // compensating the cooling), or the HCS with 003's relaxation term (theory/viscosity.hpp).
     const bool hcs = scene.relaxation;
@@ -233,32 +216,34 @@ void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlo
     nlohmann::json v = {{"reference", hcs ? "cooling state (003)" : "Gaussian-thermostat steady state (000)"}};
     if (scene.species.size() == 1) {
       auto block = [&](theory::ViscosityReference r) {
-        const theory::ShearViscosity s = theory::shear_viscosity(alpha, phi, r);
+        const theory::ShearViscosity s = theory::shear_viscosity(alpha, phi, r, d);
         return nlohmann::json{{"eta_over_eta0", s.total},
                               {"eta_kinetic_over_eta0", s.kinetic},
-                              {"eta_star", theory::reduced_viscosity_one_species(s.total)},
-                              {"eta_kinetic_star", theory::reduced_viscosity_one_species(s.kinetic)}};
+                              {"eta_star", theory::reduced_viscosity_one_species(s.total, d)},
+                              {"eta_kinetic_star", theory::reduced_viscosity_one_species(s.kinetic, d)}};
       };
       v["first_sonine"] = block(reference);
       if (hcs)  // the f^(0) of the relaxation term: first-Sonine a2 by default; the second-Sonine HCS for scale
-        v["relaxation_f0"] = {{"a2", scene.relaxation_a2.value_or(theory::hcs_a2(alpha))},
-                              {"hcs_a2_first_sonine", theory::hcs_a2(alpha)},
-                              {"hcs_a2_second_sonine", theory::hcs_second_sonine(alpha).a2}};
+        v["relaxation_f0"] = {{"a2", scene.relaxation_a2.value_or(theory::hcs_a2(alpha, d))},
+                              {"hcs_a2_first_sonine", theory::hcs_a2(alpha, d)},
+                              {"hcs_a2_second_sonine", theory::hcs_second_sonine(alpha, d).a2}};
       v["first_sonine_cooling_state"] = block(theory::ViscosityReference::cooling);
       v["first_sonine_gaussian_thermostat"] = block(theory::ViscosityReference::gaussian_thermostat);
-      // The elastic dilute gas: the converged Sonine series gives 1.016 eta0 (003: the first Sonine value
-      // is 1.6 % low).
-      v["elastic_dilute_eta_over_eta0"] = 1.016;
-    } else if (const auto& r = scene.collision.restitution; r[0][1] == alpha && r[1][1] == alpha) {  // common alpha
+      // The elastic dilute gas: the converged Sonine series gives 1.016 eta0 for spheres (003: the first Sonine
+      // value is 1.6 % low), 1.022 eta0 for disks (Garcia-Rojo, Luding and Brey, PRE 74, 061305 (2006)).
+      v["elastic_dilute_eta_over_eta0"] = d == 2 ? 1.022 : 1.016;
+    } else if (const auto& r = scene.collision.restitution; d == 3 && r[0][1] == alpha && r[1][1] == alpha) {
       const SpeciesConfig &a = scene.species[0], &b = scene.species[1];
       const theory::MixtureViscosityRatios m = theory::mixture_viscosity_from_ratios(
           a.mass / b.mass, a.diameter / b.diameter, a.density / b.density, alpha, phi, reference);
       v["first_sonine"] = {
           {"eta_over_eta_elastic", m.over_elastic}, {"eta_kinetic_star", m.kinetic_star}, {"eta_star", m.star}};
     }
-    applies.push_back(
-        "uniform shear flow, hard spheres: first-Sonine Navier-Stokes shear viscosity (003; "
-        "mixtures docs/derivations/viscosity.md)");
+    if (d == 2 && !v.contains("first_sonine")) return;  // disk mixtures: no viscosity theory
+    applies.push_back(d == 2 ? "uniform shear flow, hard disks: first-Sonine Navier-Stokes shear viscosity in d = 2, "
+                               "dilute or Enskog (docs/derivations/viscosity.md, \"Disks\")"
+                             : "uniform shear flow, hard spheres: first-Sonine Navier-Stokes shear viscosity (003; "
+                               "mixtures docs/derivations/viscosity.md)");
     j["viscosity"] = v;
   }
 }

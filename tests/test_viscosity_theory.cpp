@@ -228,21 +228,36 @@ TEST(SteadyShearTheory, IsTheEndOfTheGradMomentEquations) {
 }
 
 TEST(ViscosityTheory, DisksHaveTheFirstSonineCoefficientsOfDimensionTwo) {
-  // dilute_shear_viscosity's d = 2 branch against the d-general forms (theory/viscosity.hpp) written here
-  // with d explicit, and its d = 3 branch against shear_viscosity at phi = 0. The d-general collision
-  // integrals are checked by Monte Carlo in docs/derivations/viscosity.md, "Disks".
+  // shear_viscosity in d = 2 against the d-general forms (theory/viscosity.hpp) written here with d explicit,
+  // dilute and dense. The d-general dilute collision integrals are checked by Monte Carlo in
+  // docs/derivations/viscosity.md, "Disks".
+  const double d = 2.0;
   for (double alpha : {0.3, 0.6, 0.9, 1.0})
-    for (ViscosityReference r : {kCooling, kThermostat}) {
-      const double d = 2.0, c0 = 2.0 * hcs_a2(alpha, 2);
-      const double nu_eta = 3.0 / (4.0 * d) * (1.0 - alpha + 2.0 * d / 3.0) * (1.0 + alpha) * (1.0 - c0 / 64.0);
-      const double zeta = (d + 2.0) / (4.0 * d) * (1.0 - alpha * alpha) * (1.0 + 3.0 * c0 / 32.0);
-      const ShearViscosity v = dilute_shear_viscosity(alpha, 2, r);
-      EXPECT_NEAR(v.nu_eta, nu_eta, 1e-15) << alpha;
-      EXPECT_NEAR(v.zeta, zeta, 1e-15) << alpha;
-      EXPECT_NEAR(v.total, 1.0 / (nu_eta - (r == kCooling ? 0.5 : 1.0) * zeta), 1e-14) << alpha;
-      EXPECT_EQ(v.kinetic, v.total);
-      EXPECT_EQ(dilute_shear_viscosity(alpha, 3, r).total, shear_viscosity(alpha, 0.0, 1.0, r).total);
-    }
-  EXPECT_EQ(dilute_shear_viscosity(1.0, 2, kCooling).total, 1.0);
+    for (ViscosityReference r : {kCooling, kThermostat})
+      for (double phi : {0.0, 0.2}) {
+        const double chi = phi > 0.0 ? granmc::enskog_chi_disks(phi) : 1.0, c0 = 2.0 * hcs_a2(alpha, 2);
+        const double nu_eta = 3.0 / (4.0 * d) * chi * (1.0 - alpha + 2.0 * d / 3.0) * (1.0 + alpha) * (1.0 - c0 / 64.0);
+        const double zeta = (d + 2.0) / (4.0 * d) * chi * (1.0 - alpha * alpha) * (1.0 + 3.0 * c0 / 32.0);
+        const double kinetic =
+            (1.0 - std::pow(2.0, d - 2.0) / (d + 2.0) * phi * chi * (1.0 + alpha) * (1.0 - 3.0 * alpha)) /
+            (nu_eta - (r == kCooling ? 0.5 : 1.0) * zeta);
+        const double total = kinetic * (1.0 + std::pow(2.0, d - 1.0) / (d + 2.0) * phi * chi * (1.0 + alpha)) +
+                             d / (d + 2.0) * std::pow(2.0, 2.0 * d + 1.0) / (std::numbers::pi * (d + 2.0)) * phi * phi *
+                                 chi * (1.0 + alpha) * (1.0 - c0 / 32.0);
+        const ShearViscosity v = shear_viscosity(alpha, phi, r, 2);
+        EXPECT_NEAR(v.nu_eta, nu_eta, 1e-15) << alpha;
+        EXPECT_NEAR(v.zeta, zeta, 1e-15) << alpha;
+        EXPECT_NEAR(v.kinetic, kinetic, 1e-14) << alpha;
+        EXPECT_NEAR(v.total, total, 1e-14) << alpha;
+      }
+  EXPECT_EQ(shear_viscosity(1.0, 0.0, kCooling, 2).total, 1.0);
   EXPECT_NEAR(reduced_viscosity_one_species(1.0, 2), std::sqrt(2.0) / 4.0, 1e-16);
+  // Elastic disks: Gass's Enskog viscosity, eta / eta0 = 1/chi + 2 phi + (1 + 8/pi) phi^2 chi (J. Chem. Phys.
+  // 54, 1898 (1971)).
+  for (double phi : {0.1, 0.25, 0.4}) {
+    const double chi = granmc::enskog_chi_disks(phi);
+    EXPECT_NEAR(shear_viscosity(1.0, phi, kThermostat, 2).total,
+                1.0 / chi + 2.0 * phi + (1.0 + 8.0 / std::numbers::pi) * phi * phi * chi, 1e-14)
+        << phi;
+  }
 }

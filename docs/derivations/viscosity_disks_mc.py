@@ -6,7 +6,7 @@ Run:   /usr/bin/python3 docs/derivations/viscosity_disks_mc.py [--batches 200] [
        docs/derivations/viscosity.md sec. 9; the a2 parts have heavy-tailed integrands, so fewer batches give
        a rougher standard error)
 
-What it checks (docs/derivations/viscosity.md sec. 9, kernel/theory/viscosity.cpp dilute_shear_viscosity,
+What it checks (docs/derivations/viscosity.md sec. 9, kernel/theory/viscosity.cpp shear_viscosity in d = 2,
 kernel/theory/steady_shear.cpp), one species, dilute, in d = 3 (as a control: the forms there are derived
 exactly in sec. 3) and d = 2, alpha in {1, 0.7}:
 

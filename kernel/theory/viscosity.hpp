@@ -35,20 +35,22 @@ struct ShearViscosity {
 /// eta0 = (5 / (16 sigma^2)) sqrt(m T / pi) (003).
 double elastic_dilute_viscosity(double mass, double diameter, double temperature) noexcept;
 
-/// First-Sonine eta^k and eta at restitution alpha, packing fraction phi = pi n sigma^3 / 6 and contact value
-/// chi (phi = 0, chi = 1: the dilute Boltzmann gas). c0 = 2 hcs_a2(alpha).
-ShearViscosity shear_viscosity(double alpha, double phi, double chi, ViscosityReference reference) noexcept;
+/// First-Sonine eta^k and eta at restitution alpha, packing fraction phi = pi n sigma^3 / 6 (disks pi n sigma^2 /
+/// 4) and contact value chi (phi = 0, chi = 1: the dilute Boltzmann gas). c0 = 2 hcs_a2(alpha, d). Disks
+/// (dimension 2): eta0 = ((d + 2) / 8) Gamma(d / 2) pi^(-(d - 1) / 2) sigma^(1 - d) sqrt(m T) = (1 / (2 sigma))
+/// sqrt(m T / pi), and the d-dimensional forms of the terms above (Brey, Dufty, Kim and Santos, PRE 58, 4638
+/// (1998) dilute; Garzo and Montanero, Physica A 313, 336 (2002) dense; docs/derivations/viscosity.md, "Disks"):
+///   nu_eta* = (3 / (4 d)) chi (1 - alpha + 2 d / 3)(1 + alpha)(1 - c0 / 64),
+///   zeta* = ((d + 2) / (4 d)) chi (1 - alpha^2)(1 + 3 c0 / 32),
+///   eta^k / eta0 = [1 - (2^(d-2) / (d + 2)) phi chi (1 + alpha)(1 - 3 alpha)] / (nu_eta* - r zeta*),
+///   eta / eta0 = eta^k / eta0 [1 + (2^(d-1) / (d + 2)) phi chi (1 + alpha)]
+///                + (d / (d + 2)) (2^(2d+1) / (pi (d + 2))) phi^2 chi (1 + alpha)(1 - c0 / 32).
+ShearViscosity shear_viscosity(double alpha, double phi, double chi, ViscosityReference reference,
+                               int dimension = 3) noexcept;
 
-/// The same with chi of Carnahan-Starling (003; 000 eq. 3 for one species, granmc::enskog_chi).
-ShearViscosity shear_viscosity(double alpha, double phi, ViscosityReference reference);
-
-/// Dilute (phi = 0) first-Sonine eta / eta0 of spheres (dimension 3: shear_viscosity at phi = 0, chi = 1) or
-/// disks (2). In d dimensions eta0 = ((d + 2) / 8) Gamma(d / 2) pi^(-(d - 1) / 2) sigma^(1 - d) sqrt(m T)
-/// (1 / (2 sigma) sqrt(m T / pi) for disks) and, with c0 = 2 hcs_a2(alpha, d) (Brey, Dufty, Kim and Santos,
-/// PRE 58, 4638 (1998); docs/derivations/viscosity.md, "Disks"),
-///   nu_eta* = (3 / (4 d)) (1 - alpha + 2 d / 3)(1 + alpha)(1 - c0 / 64),
-///   zeta* = ((d + 2) / (4 d)) (1 - alpha^2)(1 + 3 c0 / 32).
-ShearViscosity dilute_shear_viscosity(double alpha, int dimension, ViscosityReference reference) noexcept;
+/// The same with chi of Carnahan-Starling (003; 000 eq. 3 for one species, granmc::enskog_chi), or Henderson's
+/// for disks (granmc::enskog_chi_disks).
+ShearViscosity shear_viscosity(double alpha, double phi, ViscosityReference reference, int dimension = 3);
 
 /// 000 Figs. 10-12: eta* = nu eta / (n T), nu = sqrt(pi) n sigma_12^2 v0; for one species sigma_12 = sigma,
 /// v0 = sqrt(2 T / m), so eta* = (5 sqrt(2) / 16) eta / eta0. Disks: nu = (sqrt(pi) / 2) n sigma v0
