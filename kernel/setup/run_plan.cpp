@@ -27,7 +27,7 @@ constexpr const char* supported_list =
     "disks (collision.tangential_restitution > "
     "-1) with method = \"dsmc\", one species, "
     "thermostat \"none\", \"gaussian\" (scaling velocities and spins alike) or \"white-noise\" (on translation, or "
-    "a share on the spins), no shear";
+    "a share on the spins), a dilute [shear] rate (no packing_fraction)";
 
 [[noreturn]] void refuse(const std::string& what) {
   throw PlanRefusal("this version of granmc cannot run " + what + " yet; " + supported_list);

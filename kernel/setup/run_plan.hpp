@@ -82,9 +82,10 @@ inline constexpr const char* relaxation_refusal =
 /// products for which it and spread_refusal are nullptr.
 template <class Kernel, class Shear, class Thermostat>
 constexpr const char* stepped_refusal() noexcept {
-  if constexpr (rough_kernel<Kernel> && !Shear::empty)
-    return "a [shear] rate with rough particles (collision.tangential_restitution > -1)";
-  else if constexpr (!Shear::empty && !std::is_same_v<Kernel, HardCore<Kernel::dimension>>)
+  if constexpr (rough_kernel<Kernel> && Shear::template has<EnskogShearShift>)
+    return "a [shear] rate with rough particles (collision.tangential_restitution > -1) and a packing_fraction "
+           "(the Enskog shift of the contact velocity)";
+  else if constexpr (!Shear::empty && !std::is_same_v<Kernel, HardCore<Kernel::dimension, rough_kernel<Kernel>>>)
     return "a [shear] rate with kernel = \"maxwell\" or \"vhs\"";
   else if constexpr (!Shear::empty && Thermostat::template has<WhiteNoise>)
     return "a [shear] rate with the white-noise thermostat";
