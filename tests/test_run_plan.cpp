@@ -83,7 +83,7 @@ TEST(RunPlan, EveryCombinationRunsOrIsRefusedWithAReason) {
                   const RunResult result = run_plan(plan, scene, {});  // a refused product would throw logic_error
                   EXPECT_EQ(result.replicas.size(), 1u) << text;
                 }
-  // Maxwell and VHS: one species only (rate form), no shear, no relaxation; disks: no relaxation.
+  // Maxwell and VHS: one species only (rate form), no shear, no relaxation; relaxation: one species.
   EXPECT_GT(ran, 40);
   EXPECT_GT(refused, 40);
   std::printf("%d combinations ran, %d were refused\n", ran, refused);

@@ -259,6 +259,30 @@ TEST(Shear, ElasticDenseDisksHaveTheEnskogViscosity) {
   expect_elastic_viscosity(2, 48, 80.0, 160, 10000, 0.03, enskog, 0.074, phi, 0.022 * kinetic);
 }
 
+TEST(Shear, RelaxationTermGivesDisksTheCoolingStatesViscosity) {
+  // 003's modified shear flow in the plane: the Gaussian thermostat and the BGK-like relaxation to the disks'
+  // first-Sonine f^(0) (core/sonine_maxwellian.hpp, d = 2) make the Navier-Stokes viscosity that of the cooling
+  // state, 1 / (nu_eta* - zeta*/2) (theory/viscosity.hpp, d = 2), not the thermostatted state's
+  // 1 / (nu_eta* - zeta*), 11 % higher at alpha = 0.8. Dilute disks, a = 0.1 (a* about 0.08).
+  Scene s = sheared_gas(0.8, 0.0, 0.1, 48, 10000, "[relaxation]\nenabled = true\n", 2);
+  s.run.t_end = 40.0;
+  s.run.samples = 80;
+  const RunResult result = run_scene(s, {});
+  const RunReport report = make_run_report(s, result, 0.0);
+  ASSERT_TRUE(report.viscosity && report.viscosity->eta_over_eta0);
+  const MeanCI eta = *report.viscosity->eta_over_eta0;
+  const double cooling = theory::shear_viscosity(0.8, 0.0, 1.0, theory::ViscosityReference::cooling, 2).total;
+  const double heated =
+      theory::shear_viscosity(0.8, 0.0, 1.0, theory::ViscosityReference::gaussian_thermostat, 2).total;
+  std::printf("disks, 003: eta/eta0 = %.4f +- %.4f (cooling state %.4f, thermostatted %.4f), a* in [%.3f, %.3f]\n",
+              eta.mean, eta.ci, cooling, heated, report.viscosity->reduced_shear_rate_min,
+              report.viscosity->reduced_shear_rate_max);
+  // Bound: measured today 0.032 (eta/eta0 = 1.0588); bound 1.5x. Model error: the first Sonine's 2.2 % of the
+  // elastic disks.
+  EXPECT_TRUE(within_ci("eta/eta0", eta, cooling, 0.048, 0.022 * cooling));
+  EXPECT_LT(report.viscosity->reduced_shear_rate_max, 0.1);
+}
+
 TEST(Shear, ShiftedCollisionsOfDisksConserveMomentumAndEnergyBookkeeping) {
   const Scene s = sheared_gas(0.7, 0.3, 1.0, 2, 4000, "", 2);
   for (const ReplicaSeries& r : run_scene(s, {}).replicas) {

@@ -203,3 +203,44 @@ TEST(SonineMaxwellian, RejectsA2OutsideHalf) {
     EXPECT_THROW(SonineMaxwellian{a2}, std::invalid_argument);
   EXPECT_EQ(SonineMaxwellian(-0.5).a2(), -0.5);
 }
+
+TEST(SonineMaxwellian, DisksSampleTheirPhiInThePlane) {
+  // d = 2: in x = c^2 the density is max(e^(-x) [1 + a2 (x^2/2 - 2x + 1)], 0) / (1 + m), untruncated moments
+  // <x> = 1, <x^2> = 2 (1 + a2). The references are Simpson integrals of that density over x; every sample lies
+  // in the plane (z = 0 exactly) and its direction is uniform (<c_x> = <c_y> = <c_x c_y> = 0, <c_x^2> = <c_y^2>).
+  const auto bracket2 = [](double a2, double x) { return 1.0 + a2 * (0.5 * x * x - 2.0 * x + 1.0); };
+  std::uint16_t sub = 20;
+  for (double a2 : {0.0, 0.1, -0.05}) {
+    SCOPED_TRACE(testing::Message() << "a2 = " << a2);
+    const SonineMaxwellian sampler(a2, 2);
+    const auto moment = [&](auto h) {
+      return simpson([&](double x) { return h(x) * std::exp(-x) * std::fmax(bracket2(a2, x), 0.0); }, 0.0, 64.0,
+                     200000);
+    };
+    const double mass = moment([](double) { return 1.0; });
+    EXPECT_NEAR(mass, 1.0 + sampler.truncated_mass(), 1e-9);
+    if (a2 < 0.0) {
+      EXPECT_GT(sampler.truncated_mass(), 0.0);
+    }
+    PhiloxUniforms next_uniform(20240611, sub++);
+    const int n = 1000000;
+    Sum x, x2, cx, cy, cxx, cyy, cxy;
+    for (int k = 0; k < n; ++k) {
+      const Vec3 c = sampler.sample(next_uniform);
+      ASSERT_EQ(c.z, 0.0);
+      const double c2 = norm2(c);
+      x.add(c2);
+      x2.add(c2 * c2);
+      cx.add(c.x), cy.add(c.y), cxx.add(c.x * c.x), cyy.add(c.y * c.y), cxy.add(c.x * c.y);
+    }
+    const double mean_x = moment([](double v) { return v; }) / mass;
+    expect_mean(x, n, mean_x, "<c^2>");
+    expect_mean(x2, n, moment([](double v) { return v * v; }) / mass, "<c^4>");
+    expect_mean(cx, n, 0.0, "<c_x>");
+    expect_mean(cy, n, 0.0, "<c_y>");
+    expect_mean(cxy, n, 0.0, "<c_x c_y>");
+    expect_mean(cxx, n, mean_x / 2.0, "<c_x^2>");
+    expect_mean(cyy, n, mean_x / 2.0, "<c_y^2>");
+  }
+  EXPECT_DOUBLE_EQ(SonineMaxwellian(0.1, 2).acceptance(), 1.0 / 1.2);  // W+ = 1 + 2 a2
+}

@@ -1,6 +1,7 @@
 #pragma once
 // Exact sampler of the first-Sonine Maxwellian of the homogeneous cooling state: 003 (f^(0) of the
-// BGK-like relaxation term), a2 = c0/2 first Sonine. In the reduced velocity c = V / v0, v0 = sqrt(2T/m),
+// BGK-like relaxation term), a2 = c0/2 first Sonine; spheres, and disks (below). In the reduced velocity c = V / v0, v0
+// = sqrt(2T/m),
 //   phi(c) = pi^(-3/2) e^(-c^2) [1 + a2 S2(c^2)],   S2(x) = x^2/2 - 5x/2 + 15/8   (d = 3),
 // normalised, with <c^2> = 3/2 and <c^4> = (15/4)(1 + a2). For a2 < 0 the bracket is negative beyond
 // x* = c*^2 = (5 + sqrt(10 - 8/a2))/2 (the only positive root for |a2| < 8/15), so phi is no density: we
@@ -23,6 +24,12 @@
 //
 // Truncated mass, a2 < 0: with Q(s + 1, x) = Q(s, x) + x^s e^(-x) / Gamma(s + 1), Q(1/2, x) = erfc(sqrt(x)),
 // and B(x*) = 0, m = -int_{x*}^inf f dx = (5|a2|/2)(x* - 3/2) sqrt(x*/pi) e^(-x*) - erfc(sqrt(x*)).
+//
+// Disks (d = 2): phi(c) = pi^-1 e^(-c^2) [1 + a2 S2(c^2)], S2(x) = x^2/2 - 2x + 1 (<c^2> = 1, <c^4> = 2 (1 + a2)),
+// and in x = c^2 the Gamma densities of integer order: f(x) = e^(-x) [1 + a2 S2(x)] = (1 + a2) g_1 - 2 a2 g_2 +
+// a2 g_3 (x g_1 = g_2, x^2 g_1 = 2 g_3), proposed from Gamma(1) or Gamma(n), n = 2 (a2 < 0) or 3, each the sum of
+// n standard exponentials; x* = 2 + sqrt(2 - 2/a2) and m = -int_{x*}^inf f dx = |a2| (x* - 1) e^(-x*). The
+// direction is uniform on the circle (z = 0).
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -42,13 +49,23 @@ struct SoninePositivePart {
   double truncated_mass = 0.0;  // m
   double acceptance = 1.0;      // (1 + m) / W+
 
-  explicit SoninePositivePart(double a2)
-      : b0(1.0 + 15.0 * a2 / 8.0),
-        b1(-2.5 * a2),
+  SoninePositivePart(double a2, int dimension)
+      : b0(dimension == 2 ? 1.0 + a2 : 1.0 + 15.0 * a2 / 8.0),
+        b1(dimension == 2 ? -2.0 * a2 : -2.5 * a2),
         b2(0.5 * a2),
         p1(std::fmax(b1, 0.0)),
         p2(std::fmax(b2, 0.0)),
         high_exponentials(a2 < 0.0 ? 2 : 3) {
+    if (dimension == 2) {
+      const double w_plus = b0 + p1 + 2.0 * p2;  // int P g_1 dx, as <x> = 1, <x^2> = 2
+      low_weight = b0 / w_plus;
+      if (a2 < 0.0) {
+        const double xs = 2.0 + std::sqrt(2.0 - 2.0 / a2);
+        truncated_mass = -a2 * (xs - 1.0) * std::exp(-xs);
+      }
+      acceptance = (1.0 + truncated_mass) / w_plus;
+      return;
+    }
     const double w_plus = b0 + 1.5 * p1 + 3.75 * p2;  // int P g_{3/2} dx, as <x> = 3/2, <x^2> = 15/4
     low_weight = b0 / w_plus;
     if (a2 < 0.0) {
@@ -62,14 +79,29 @@ struct SoninePositivePart {
 
 class SonineMaxwellian {
  public:
-  /// Throws std::invalid_argument unless |a2| <= 1/2 (the first-Sonine HCS a2 lies in [-0.0155, 0.1976]).
-  explicit SonineMaxwellian(double a2) : a2_(checked(a2)), part_(a2) {}
+  /// Throws std::invalid_argument unless |a2| <= 1/2 (the first-Sonine HCS a2 lies in [-0.0155, 0.1976] for
+  /// spheres, [-0.0280, 0.2807] for disks).
+  explicit SonineMaxwellian(double a2, int dimension = 3)
+      : a2_(checked(a2)), dimension_(dimension), part_(a2, dimension) {}
 
   /// One reduced velocity c (V = v0 c) from max(phi, 0) / (1 + m); next_uniform() returns doubles on (0, 1).
-  /// Consumes a random number of uniforms: per attempt 1 (component) + n + 2 (gamma) + 1 (accept), then 2.
+  /// Consumes a random number of uniforms: per attempt 1 (component) + n + 2 (gamma) + 1 (accept), then 2;
+  /// disks 1 + n + 1 per attempt, then 1.
   template <class Uniforms>
   Vec3 sample(Uniforms& next_uniform) const {
     double x;
+    if (dimension_ == 2) {
+      for (;;) {
+        const int n = next_uniform() < part_.low_weight ? 1 : part_.high_exponentials;
+        double product = 1.0;
+        for (int i = 0; i < n; ++i) product *= next_uniform();
+        x = -std::log(product);
+        const double bracket = part_.b0 + x * (part_.b1 + x * part_.b2);
+        const double envelope = part_.b0 + x * (part_.p1 + x * part_.p2);
+        if (next_uniform() * envelope < bracket) break;
+      }
+      return std::sqrt(x) * unit_circle_vector(next_uniform());
+    }
     for (;;) {
       const int n = next_uniform() < part_.low_weight ? 1 : part_.high_exponentials;
       const double u1 = next_uniform();
@@ -99,6 +131,7 @@ class SonineMaxwellian {
   }
 
   double a2_;
+  int dimension_;
   SoninePositivePart part_;
 };
 

@@ -8,7 +8,7 @@
 // zeta is the step's thermostat rate, zeta dt = ln(1 + loss / E) from the collisional loss (the same
 // expression as the thermostat's). f^(0) is sampled as the first-Sonine HCS distribution, a Maxwellian
 // times 1 + a2 S2 with a2 = c0 / 2 of 003 (core/sonine_maxwellian.hpp, exact; docs/physics.md measures
-// what the choice costs against the true HCS). One species (003 is monodisperse).
+// what the choice costs against the true HCS), in d = 3 or 2. One species (003 is monodisperse).
 //
 // Particles are chosen by geometric gaps (O(replaced) work, not O(N)): the gap before the next replaced
 // particle is floor(ln u / ln(1 - p)). Random words: purpose relaxation, step = time step, a running
@@ -29,8 +29,9 @@ struct BgkRelaxation {
   static constexpr const char* name = "bgk-relaxation";
   static constexpr bool acts_on_particles = true;
 
-  SonineMaxwellian f0{0.0};  // f^(0) in reduced velocity V / v0, a2 of the scene's alpha
+  SonineMaxwellian f0{0.0};  // f^(0) in reduced velocity V / v0, a2 of the scene's alpha (and dimension)
   double mass = 1.0;
+  int dimension = 3;
 
   [[nodiscard]] std::string explanation() const {
     return "BGK-like relaxation to the first-Sonine HCS f^(0) (003), O(replaced) per step";
@@ -44,7 +45,7 @@ struct BgkRelaxation {
     if (!(log_keep < 0.0)) return 0.0;
     auto& store = state.species[0];
     const double n = static_cast<double>(store.size());
-    const double v0 = std::sqrt(2.0 * step.twice_energy / (3.0 * n * mass));  // sqrt(2 T / m), T = m <c^2> / 3
+    const double v0 = std::sqrt(2.0 * step.twice_energy / (dimension * n * mass));  // sqrt(2 T / m), T = m <c^2> / d
     std::uint64_t block = 0;
     RandomBlock words{};
     int used = 4;

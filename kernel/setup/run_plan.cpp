@@ -16,14 +16,14 @@ constexpr const char* supported_list =
     "[0, 1) (Enskog chi), or kernel = \"maxwell\" or \"vhs\" with collision.rate > 0 and one species; thermostat "
     "kind = \"none\", \"gaussian\" (a fixed zeta or \"cooling-rate\") or \"white-noise\"; a [shear] rate with "
     "hard spheres or disks and thermostat \"none\" or \"gaussian\" (Boltzmann, or Enskog with the shifted contact "
-    "velocity when packing_fraction > 0); the [relaxation] term of 003 for one species of hard spheres with "
+    "velocity when packing_fraction > 0); the [relaxation] term of 003 for one species of hard spheres or disks with "
     "the Gaussian thermostat compensating the cooling rate; method = \"event\" with one species, collision.rate > "
     "0 (the form of 001) and mass 1, kernel \"maxwell\", \"vhs\" or \"hard-sphere\", thermostat \"none\" or "
     "\"white-noise\", packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of "
     "dimension 1 or 2 (the needle) in a \"gaussian\" or \"power-law\" bath; "
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
-    "every gas scene; disks (run.dimension = 2) as spheres but for the relaxation term and "
-    "the spread over ranks (with a packing_fraction: Henderson's chi, Jenkins and Mancini's chi_ij); rough spheres or "
+    "every gas scene; disks (run.dimension = 2) as spheres but for the spread over ranks (with a packing_fraction: "
+    "Henderson's chi, Jenkins and Mancini's chi_ij); rough spheres or "
     "disks (collision.tangential_restitution > "
     "-1) with method = \"dsmc\", one species, "
     "thermostat \"none\", \"gaussian\" (scaling velocities and spins alike) or \"white-noise\" (on translation, or "
@@ -118,9 +118,10 @@ ThermostatChoice thermostat_effects(const Scene& scene) {
       const GaussianThermostat thermostat{th.zeta_is_cooling_rate, th.zeta};
       if (!scene.relaxation) return EffectList<GaussianThermostat>{{thermostat}};
       // 003: the thermostat, then the relaxation term to f^(0) with the first-Sonine a2 unless the scene sets it.
-      const double a2 = scene.relaxation_a2.value_or(theory::hcs_a2(scene.collision.restitution[0][0]));
+      const int d = scene.run.dimension;
+      const double a2 = scene.relaxation_a2.value_or(theory::hcs_a2(scene.collision.restitution[0][0], d));
       return EffectList<GaussianThermostat, BgkRelaxation>{
-          {thermostat, BgkRelaxation{SonineMaxwellian(a2), scene.species[0].mass}}};
+          {thermostat, BgkRelaxation{SonineMaxwellian(a2, d), scene.species[0].mass, d}}};
     }
     case ThermostatKind::white_noise:
       return EffectList<WhiteNoise>{{WhiteNoise{th.beta, species_masses(scene), scene.run.dimension,

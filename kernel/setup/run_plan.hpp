@@ -75,7 +75,8 @@ using BackendChoice = std::variant<BatchedStage, RankWaveStage>;
 
 /// The relaxation term's refusal, for a kernel or a scene outside 003's case.
 inline constexpr const char* relaxation_refusal =
-    "the [relaxation] term other than for one species of hard spheres with zeta = \"cooling-rate\" (003)";
+    "the [relaxation] term other than for one species of smooth hard spheres or disks with zeta = \"cooling-rate\" "
+    "(003)";
 
 /// Why the time-stepped scheme cannot combine these choices (completing "cannot run ... yet"), or nullptr.
 /// The one list of what it cannot combine: make_plan refuses with it, and the dispatch compiles only the
@@ -89,7 +90,7 @@ constexpr const char* stepped_refusal() noexcept {
     return "a [shear] rate with kernel = \"maxwell\" or \"vhs\"";
   else if constexpr (!Shear::empty && Thermostat::template has<WhiteNoise>)
     return "a [shear] rate with the white-noise thermostat";
-  else if constexpr (Thermostat::template has<BgkRelaxation> && !std::is_same_v<Kernel, HardSphere>)
+  else if constexpr (Thermostat::template has<BgkRelaxation> && !std::is_same_v<Kernel, HardCore<Kernel::dimension>>)
     return relaxation_refusal;
   else
     return nullptr;
