@@ -192,6 +192,11 @@ std::vector<OutputRecord> declare() {
       "temperature", "energy", "mixture temperature T = sum_i x_i T_i",
       [](const RunOutput& o) { return &o.report.temperature; },
       [](const ReplicaSeries& s) -> const auto& { return s.temperature; });
+  add("temperature_last_half", K::mean_ci, S, "energy",
+      "the mixture temperature over the last half of the samples (a steady state's T): per-replica time average, "
+      "then " +
+          std::string(ci_text),
+      [](const RunOutput& o, std::size_t) -> Value { return o.report.temperature_last_half; });
   series_with_rows(
       "log_temperature", "", "ln T of the mixture temperature (finite where T underflows)",
       [](const RunOutput& o) { return &o.report.log_temperature; },

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "kernel/analysis/replica_statistics.hpp"
+#include "kernel/analysis/run_report.hpp"
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/maxwell_pseudomolecules.hpp"
 #include "kernel/core/philox_stream.hpp"
@@ -253,6 +254,10 @@ TEST(Swpm, HardDisksAgreeWithTheEqualWeightEventScheme) {
   const MeanCI aw = last_half_a2(w), ae = last_half_a2(e);
   std::printf("hard disks: T %.4f +- %.4f weighted, %.4f +- %.4f equal; a2 %.4f +- %.4f, %.4f +- %.4f\n", tw.mean,
               tw.ci, te.mean, te.ci, aw.mean, aw.ci, ae.mean, ae.ci);
+  // The summary's temperature_last_half is this average (kernel/analysis/run_report.hpp).
+  const MeanCI reported = make_run_report(heated_hard_disks(true), w, 0.0).temperature_last_half;
+  EXPECT_NEAR(reported.mean, tw.mean, 1e-12);
+  EXPECT_NEAR(reported.ci, tw.ci, 1e-12);
   EXPECT_LE(std::fabs(tw.mean - te.mean), tw.ci + te.ci);
   EXPECT_LE(std::fabs(aw.mean - ae.mean), aw.ci + ae.ci);
   // Bounds: measured today T 0.034 (weighted) and 0.017, a2 0.0143 and 0.0094; bounds 1.5x. A hard-disk

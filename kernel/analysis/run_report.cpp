@@ -104,6 +104,8 @@ RunReport make_run_report(const Scene& scene, const RunResult& result, double wa
   report.wall_seconds = wall_seconds;
   report.temperature = per_time(
       result, [](const ReplicaSeries& s) -> const auto& { return s.temperature; });
+  report.temperature_last_half =
+      last_half_average(result, [](const ReplicaSeries& s, std::size_t k) { return s.temperature[k]; });
   report.log_temperature = per_time(
       result, [](const ReplicaSeries& s) -> const auto& { return s.log_temperature; });
   if (!result.replicas.front().intruder) {

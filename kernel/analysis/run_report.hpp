@@ -39,6 +39,7 @@ struct RunReport {
   std::string method;                     // "dsmc" | "event" | "gillespie", as spelled in scene files
   double wall_seconds = 0.0;              // wall-clock time of the run, s
   MeanCISeries temperature;               // mixture T(t) = sum_i x_i T_i, energy units
+  MeanCI temperature_last_half;           // T over the last half of the samples (as temperature_ratio): a steady T
   MeanCISeries log_temperature;           // <ln T>(t) over replicas (finite where T underflows)
   MeanCISeries temperature_uncentred;     // T + (sum_i x_i m_i) |V|^2 / 3, V = P / M: without removing the
                                           // bulk velocity, 001's T = (1/3) int |v|^2 f (eq. 35); gas only
