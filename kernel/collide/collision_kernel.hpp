@@ -37,6 +37,11 @@ namespace granmc {
 ///    pi - 2 theta when sigma-hat is at theta).
 enum class ImpactLaw { hard_core, isotropic };
 
+/// |S^(d-1)|, the area of the unit sphere (4 pi) or the length of the unit circle (2 pi).
+constexpr double unit_sphere_area(int dimension) noexcept {
+  return dimension == 2 ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi;
+}
+
 /// The mean over sigma-hat uniform on the sphere (circle) of the law's weight at |g| = 1: Theta(g.sigma)
 /// (g.sigma) averages 1/4 on the sphere and 1/pi on the circle; Theta(g.sigma) averages 1/2 on the circle.
 constexpr double mean_angular_weight(int dimension, ImpactLaw law) noexcept {

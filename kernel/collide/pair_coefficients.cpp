@@ -42,10 +42,9 @@ std::vector<PairCoefficients> pair_coefficients(const Scene& scene) {
       const double contact = disks ? 2.0 * std::numbers::pi * sigma_ij : 4.0 * std::numbers::pi * sigma_ij * sigma_ij;
       const ImpactLaw law =
           scene.collision.kernel == CollisionKernel::hard_sphere ? ImpactLaw::hard_core : ImpactLaw::isotropic;
-      const double sphere_measure = disks ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi;
-      p.rate_prefactor = scene.collision.rate > 0.0
-                             ? sphere_measure * scene.collision.rate / mean_angular_weight(scene.run.dimension, law)
-                             : contact * b.density * chi;
+      p.rate_prefactor = scene.collision.rate > 0.0 ? unit_sphere_area(scene.run.dimension) * scene.collision.rate /
+                                                          mean_angular_weight(scene.run.dimension, law)
+                                                    : contact * b.density * chi;
       p.mu_ji = b.mass / (a.mass + b.mass);
       p.mu_ij = a.mass / (a.mass + b.mass);
       p.one_plus_alpha = 1.0 + alpha;

@@ -94,7 +94,7 @@ class BasicEventScheme {
     noise_ = 2.0 * scene.thermostat.beta / (u * u);  // 2 beta in stored units per unit time
     // pi_hat = |S^(d-1)| / 2 rate (n - 1) (u U_max)^lambda: 2 pi for spheres (001 eq. 25; U_max here in
     // stored units), pi for disks
-    rate_prefactor_ = (disks ? 1.0 : 2.0) * std::numbers::pi * scene.collision.rate *
+    rate_prefactor_ = 0.5 * unit_sphere_area(Kernel::dimension) * scene.collision.rate *
                       static_cast<double>(particles_ - 1) * std::pow(u, kernel_.lambda);
     candidate_rate_ = rate_prefactor_;  // Maxwell: U_max^0 = 1, and no majorant is kept
     reset_majorant();

@@ -244,8 +244,7 @@ class SwpmScheme {
     const double u = scale_.u();
     noise_ = 2.0 * scene_.thermostat.beta / (u * u);  // 2 beta in stored units per unit time
     // |S^(d-1)| rate (u U_max)^lambda per unit weight (U_max in stored units)
-    rate_prefactor_ =
-        (dimension == 2 ? 2.0 : 4.0) * std::numbers::pi * scene_.collision.rate * std::pow(u, kernel_.lambda);
+    rate_prefactor_ = unit_sphere_area(dimension) * scene_.collision.rate * std::pow(u, kernel_.lambda);
   }
 
   /// The histogram's shell width in stored units, at stored temperature theta.

@@ -84,9 +84,6 @@ std::string rate_form_kernel(const Scene& scene) {
   return kernel;
 }
 
-/// |S^(d-1)|: 4 pi for spheres, 2 pi for disks.
-double unit_sphere_surface(const Scene& scene) { return (scene.run.dimension == 2 ? 2.0 : 4.0) * std::numbers::pi; }
-
 /// The time-step-free scheme (001 sec. 4): candidates at pi_hat = |S^(d-1)| / 2 rate (n - 1) U_max^lambda
 /// (2 pi for spheres, pi for disks), U_max estimated as 2 x the expected largest speed at the larger of T(0)
 /// and the steady temperature.
@@ -107,8 +104,8 @@ void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
         std::max(temperature, theory::white_noise_steady_temperature(c.lambda, c.rate, c.restitution[0][0],
                                                                      scene.thermostat.beta, 0.0, scene.run.dimension));
   const double majorant = 2.0 * expected_max_speed(n) * std::sqrt(temperature);
-  out.candidates = scene.run.replicas * scene.run.t_end * 0.5 * unit_sphere_surface(scene) * c.rate * (n - 1.0) *
-                   std::pow(majorant, c.lambda);
+  out.candidates = scene.run.replicas * scene.run.t_end * 0.5 * unit_sphere_area(scene.run.dimension) * c.rate *
+                   (n - 1.0) * std::pow(majorant, c.lambda);
   out.candidates_upper_bound = false;
   out.candidates_per_second = event_candidates_per_second(plan, beyond_caches(scene));
 }
@@ -134,7 +131,7 @@ void explain(const WeightedPlan& plan, const Scene& scene, PlanExplanation& out)
   out.bytes_per_particle = weighted_bytes_per_particle;
   out.particle_bytes =
       static_cast<std::uint64_t>(n) * out.bytes_per_particle * static_cast<std::uint64_t>(out.replicas_in_flight);
-  out.candidates = scene.run.replicas * scene.run.t_end * unit_sphere_surface(scene) * c.rate * 2.0 * n *
+  out.candidates = scene.run.replicas * scene.run.t_end * unit_sphere_area(scene.run.dimension) * c.rate * 2.0 * n *
                    std::pow(2.0 * scene.histogram.radius, c.lambda);
   out.candidates_upper_bound = true;
   out.candidates_per_second = weighted_candidates_per_second(plan);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "kernel/collide/collision_kernel.hpp"
+
 namespace granmc::theory {
 
 double maxwell_relaxation_rate(double rate, double alpha, int dimension) noexcept {
@@ -53,9 +55,8 @@ double white_noise_steady_temperature(double lambda, double rate, double alpha, 
   const bool hard_core = lambda == 1.0;
   const double c =
       maxwellian_relative_speed_moment(2.0 + lambda, 1.0, dimension) * (1.0 + lambda * (lambda + 2.0) * a2 / 16.0);
-  const double sphere = dimension == 3 ? 4.0 * std::numbers::pi : 2.0 * std::numbers::pi;  // |S^(d-1)|
   const double one_minus_mu = dimension == 2 && hard_core ? 4.0 / 3.0 : 1.0;
-  const double loss = (1.0 - alpha * alpha) * one_minus_mu / (8.0 * dimension) * sphere * rate * c;
+  const double loss = (1.0 - alpha * alpha) * one_minus_mu / (8.0 * dimension) * unit_sphere_area(dimension) * rate * c;
   return std::pow(2.0 * beta / loss, 1.0 / (1.0 + 0.5 * lambda));
 }
 
