@@ -123,8 +123,8 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
   else if (threads > what.replicas_in_flight)
     std::printf("threads      %d replica(s) at a time, one thread each; %d thread(s) idle%s\n", what.replicas_in_flight,
                 threads - what.replicas_in_flight,
-                what.claim_lanes > 1 ? " (--threads-per-replica puts them inside the replicas, docs/scaling.md)"
-                                     : " (this scheme runs a replica on one thread)");
+                what.threads_inside ? " (--threads-per-replica puts them inside the replicas, docs/scaling.md)"
+                                    : " (this scheme runs a replica on one thread)");
   else
     std::printf("threads      %d replicas at a time, one thread each\n", what.replicas_in_flight);
   // Threads inside a replica do not shorten it on the machines measured (docs/scaling.md): not counted.

@@ -21,6 +21,8 @@ class AddressSet {
     place(a);
   }
 
+  [[nodiscard]] bool empty() const noexcept { return filled_.empty(); }
+
   void clear() noexcept {
     for (std::size_t s : filled_) table_[s] = nullptr;
     filled_.clear();

@@ -8,9 +8,7 @@
 // in a plain loop, 2.1-2.3x with prefetch (perf/bench_layout.cpp keeps the measurement;
 // docs/performance.md the figures). The fourth slot `aux`
 // is reserved for the lazy-update time t_j of the event scheme (001 sec. 4), so that scheme also stays
-// within 32 bytes per particle. The time-stepped scheme keeps no time there: it holds the claims of its
-// concurrent collision rounds (schemes/concurrent_rounds.hpp), `claim_lanes` 16-bit lanes, in the cache line
-// the collision loads anyway.
+// within 32 bytes per particle; the time-stepped scheme leaves it unused.
 //
 // The scalar of the record is the scene's storage precision (run.storage, docs/scenes.md): double, or
 // float for half the memory (16-byte records). The physics always computes in double: a velocity is
@@ -45,14 +43,6 @@ class BasicSpeciesStore {
     void prefetch() const noexcept { __builtin_prefetch(r_, 1, 3); }
     /// Where the record is: equal for two handles of the same particle.
     [[nodiscard]] const void* address() const noexcept { return r_; }
-    /// Writes `tag` into claim lane `lane` (schemes/concurrent_rounds.hpp: lane t is written by thread t only).
-    void claim(std::size_t lane, std::uint16_t tag) const noexcept { r_->claim[lane] = tag; }
-    /// Whether a lane below `lane` holds `tag`.
-    [[nodiscard]] bool claimed_below(std::size_t lane, std::uint16_t tag) const noexcept {
-      bool claimed = false;
-      for (std::size_t l = 0; l < lane; ++l) claimed |= r_->claim[l] == tag;
-      return claimed;
-    }
 
    private:
     friend class BasicSpeciesStore;
@@ -63,14 +53,6 @@ class BasicSpeciesStore {
   explicit BasicSpeciesStore(std::size_t particles) : records_(particles) {}
 
   [[nodiscard]] std::size_t size() const noexcept { return records_.size(); }
-
-  /// The claim lanes of a record: one per thread of a concurrent collision round.
-  static constexpr std::size_t claim_lanes = sizeof(Real) / sizeof(std::uint16_t);
-  /// Sets every claim lane of every particle to 0, a tag no round uses.
-  void clear_claims() noexcept {
-    for (std::size_t k = 0; k < records_.size(); ++k)
-      for (std::size_t l = 0; l < claim_lanes; ++l) records_[k].claim[l] = 0;
-  }
 
   [[nodiscard]] Vec3 velocity(std::size_t k) const noexcept {
     const Record& r = records_[k];
@@ -260,10 +242,7 @@ class BasicSpeciesStore {
  private:
   struct alignas(4 * sizeof(Real)) Record {
     Real v[3];
-    union {  // the event scheme's last update, or the time-stepped scheme's claims (never both)
-      Real aux;
-      std::uint16_t claim[sizeof(Real) / sizeof(std::uint16_t)];
-    };
+    Real aux;  // the event scheme's last update
   };
   static_assert(sizeof(Record) == 4 * sizeof(Real));
   struct alignas(4 * sizeof(Real)) SpinRecord {

@@ -45,8 +45,10 @@
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/collide/rough_rule.hpp"
+#include "kernel/core/address_filter.hpp"
 #include "kernel/core/address_set.hpp"
 #include "kernel/core/batch_variates.hpp"
+#include "kernel/core/bounded_list.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/sampling.hpp"
 #include "kernel/core/sym_tensor.hpp"
@@ -239,46 +241,47 @@ class BatchedStage {
     set_deck(deck);
     std::copy(majorants.begin(), majorants.end(), majorant_);
     raised_ = false;
-    outcomes_.clear(), undo_.clear(), spin_undo_.clear();
+    outcomes_.reset(end - first), undo_.reset(2 * (end - first)), spin_undo_.reset(rough ? 2 * (end - first) : 0);
     replayed_from_ = undo_replayed_from_ = 0;
     chunk_.resize((end - first + batch - 1) / batch);
     deferred_.assign(chunk_.size(), 0);
   }
 
-  /// Draws the chunk and writes `tag` into claim lane `lane` of each of its particles, a batch after
-  /// prefetching them (the chunk's records are in cache when it runs).
-  void draw_and_claim(std::size_t lane, std::uint16_t tag) noexcept {
-    for (std::uint64_t i = 0, s0 = chunk_first_; i <= chunk_.size(); ++i, s0 += batch) {
-      if (i < chunk_.size()) {
-        Drawn& d = chunk_[i];
-        draw(d, s0, std::min(batch, chunk_end_ - s0));
-        for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - s0); ++b) {
-          d.pk[b].prefetch();
-          d.pl[b].prefetch();
-        }
-      }
-      if (i > 0) {
-        const Drawn& d = chunk_[i - 1];
-        for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - d.first); ++b) {
-          d.pk[b].claim(lane, tag);
-          d.pl[b].claim(lane, tag);
-        }
+  /// Draws the chunk and lists the keys of its particles (AddressFilter::key). It reads no record: the chunk's
+  /// collisions prefetch theirs a batch ahead, as the one-thread stage does (a pass that fetched the records
+  /// first left them out of the first-level cache again by the time they collided, docs/scaling.md).
+  void draw_chunk() {
+    keys_.clear();
+    for (std::uint64_t i = 0, s0 = chunk_first_; i < chunk_.size(); ++i, s0 += batch) {
+      Drawn& d = chunk_[i];
+      draw(d, s0, std::min(batch, chunk_end_ - s0));
+      for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - s0); ++b) {
+        keys_.push_back(AddressFilter::key(d.pk[b].address()));
+        keys_.push_back(AddressFilter::key(d.pl[b].address()));
       }
     }
   }
+  /// The keys of the particles the chunk names (draw_chunk).
+  [[nodiscard]] std::span<const std::uint32_t> chunk_keys() const noexcept { return keys_; }
 
-  /// Defers the candidates of the chunk that meet a particle claimed this round (`tag`) by an earlier chunk
-  /// (a lane below `lane`), and those that meet a particle of a deferred candidate before them.
-  void defer(std::size_t lane, std::uint16_t tag) {
-    if (lane == 0) return;  // the round's first chunk follows every candidate before it
+  /// Defers the candidates of the chunk that may meet a particle of an earlier chunk of the round (`earlier`,
+  /// their chunk_keys, copied into a filter in this thread's cache), and those that meet a particle of a
+  /// deferred candidate before them.
+  void defer(std::span<const std::span<const std::uint32_t>> earlier) {
     held_back_.clear();
+    if (earlier.empty()) return;  // the round's first chunk follows every candidate before it
+    earlier_.clear();
+    for (const auto keys : earlier)
+      for (const std::uint32_t k : keys) earlier_.insert(k);
+    const auto met = [&](const void* a) {
+      return earlier_.may_contain(a) || (!held_back_.empty() && held_back_.contains(a));
+    };
     for (std::size_t i = 0; i < chunk_.size(); ++i) {
       const Drawn& d = chunk_[i];
       for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - d.first); ++b) {
         const auto& pk = d.pk[b];
         const auto& pl = d.pl[b];
-        if (pk.claimed_below(lane, tag) || pl.claimed_below(lane, tag) || held_back_.contains(pk.address()) ||
-            held_back_.contains(pl.address())) {
+        if (met(pk.address()) || met(pl.address())) {
           deferred_[i] |= std::uint64_t{1} << b;
           held_back_.insert(pk.address());
           held_back_.insert(pl.address());
@@ -318,10 +321,10 @@ class BatchedStage {
   [[nodiscard]] bool raised() const noexcept { return raised_; }
   /// The collisions' terms: those of run_chunk, then those of replay_deferred, each in candidate order.
   [[nodiscard]] std::span<const Outcome> chunk_outcomes() const noexcept {
-    return std::span(outcomes_).first(replayed_from_);
+    return outcomes_.items().first(replayed_from_);
   }
   [[nodiscard]] std::span<const Outcome> replayed_outcomes() const noexcept {
-    return std::span(outcomes_).subspan(replayed_from_);
+    return outcomes_.items().subspan(replayed_from_);
   }
   /// Restores the velocities (and spins) that replay_deferred overwrote, then those that run_chunk overwrote.
   void undo_replayed() noexcept { undo(undo_replayed_from_, undo_.size()); }
@@ -469,8 +472,8 @@ class BatchedStage {
     const std::size_t q = one_pair ? 0 : d.qs[b];
     const PairCoefficients& p = one_pair ? only_pair_ : pairs_[q];
     if constexpr (in_round) {
-      undo_.emplace_back(d.pk[b], vk);
-      undo_.emplace_back(d.pl[b], vl);
+      undo_.push_back({d.pk[b], vk});
+      undo_.push_back({d.pl[b], vl});
     }
     double twice_energy_loss;
     if constexpr (rough) {  // collide/rough_rule.hpp, with the spins beside the records
@@ -703,15 +706,17 @@ class BatchedStage {
   std::uint64_t chunk_first_ = 0, chunk_end_ = 0;
   std::vector<Drawn> chunk_;
   std::vector<std::uint64_t> deferred_;
+  std::vector<std::uint32_t> keys_;
+  AddressFilter earlier_;
   AddressSet held_back_;
-  std::vector<Outcome> outcomes_;
-  std::vector<std::pair<typename Store::Particle, Vec3>> undo_;  // particle, velocity before a collision
+  BoundedList<Outcome> outcomes_;
+  BoundedList<std::pair<typename Store::Particle, Vec3>> undo_;  // particle, velocity before a collision
   struct SpinBefore {
     Store* store;
     std::size_t index;
     Vec3 spin;
   };
-  std::vector<SpinBefore> spin_undo_;  // rough particles: entry e the spin of undo_[e]'s particle before it
+  BoundedList<SpinBefore> spin_undo_;  // rough particles: entry e the spin of undo_[e]'s particle before it
   std::size_t replayed_from_ = 0, undo_replayed_from_ = 0;
   bool raised_ = false;
 };

@@ -4,22 +4,24 @@
 //
 // The candidates of a step, their pairs, particles and uniforms, depend on the counters only, never on a
 // velocity. A round hands thread t the chunk of candidates [R + t B, R + (t + 1) B):
-//  1. each thread draws its chunk and writes the round's tag into claim lane t of each particle it names
-//     (the records' fourth slot, core/species_store.hpp);
-//  2. after a barrier, each thread defers the candidates of its chunk that name a particle claimed by an
-//     earlier chunk (a lane below t) or by a deferred candidate before them, and runs the others in order;
+//  1. each thread draws its chunk and lists its particles' keys (core/address_filter.hpp); it reads no record;
+//  2. after a barrier, each thread puts the keys of the earlier chunks of the round into a filter of its own,
+//     defers the candidates of its chunk that may name a particle of an earlier chunk, or that name one of a
+//     deferred candidate before them, and runs the others in order, records prefetched a batch ahead as on
+//     one thread;
 //  3. one thread replays the deferred candidates in candidate order, then adds the collisions' terms to the
 //     tallies in candidate order.
 // A candidate that runs in step 2 names no particle that an earlier candidate of the round, in another
-// chunk, names: every particle sees the updates of the serial order, in that order. What the chunks share
-// is the majorant, which a collision raises when omega exceeds it (000 sec. 3): all chunks test against
-// its value at the round's start, which is the serial value unless a candidate raises it. If one does,
-// the round's velocities (and the spins of rough particles, beside the records under the same index) are
-// restored from the overwritten values kept in step 2 and 3, and the round runs again in order on one
-// thread. Raises are rare (a few per run); a candidate of chunk t is deferred with probability about
-// 4 B t / N (0.08 % at N = 10^7, B = 2048, t = 1). On the 2-core host measured, two threads in rounds are
-// slower than one (0.8x at N = 10^7: the claim pass takes the memory misses that the one-thread stage
-// hides, docs/scaling.md), so they run only when asked for (RunOptions::threads_per_replica).
+// chunk, names: every particle sees the updates of the serial order, in that order. The filter may answer
+// "maybe" for a particle no earlier chunk names; that defers a candidate needlessly and changes nothing else.
+// What the chunks share is the majorant, which a collision raises when omega exceeds it (000 sec. 3): all
+// chunks test against its value at the round's start, which is the serial value unless a candidate raises
+// it. If one does, the round's velocities (and the spins of rough particles, beside the records under the
+// same index) are restored from the overwritten values kept in step 2 and 3, and the round runs again in
+// order on one thread. Raises are rare (a few per run); a candidate of chunk t is deferred with probability
+// about 4 B t / N for a shared particle (0.08 % at N = 10^7, B = 2048, t = 1) and about 0.2 % for the filter's
+// "maybe". On the 2-core host measured, two threads in rounds are about as fast as one at N = 10^7
+// (docs/scaling.md), so they run only when asked for (RunOptions::threads_per_replica).
 #include <omp.h>
 
 #include <algorithm>
@@ -36,16 +38,16 @@
 
 namespace granmc {
 
-/// A replica's threads for its collision stage, and the claim tag its rounds have reached.
+/// A replica's threads for its collision stage, and what its rounds did.
 struct ConcurrentRounds {
   int threads = 1;
-  std::uint16_t tag = 0;  // the last round's; 0 is no round's, and the records start with 0
   CollisionRoundCounts counts;
 };
 
 /// Candidates per thread and round for N particles: about N / 4096 (a multiple of the batch), at least
-/// 512 and at most 2048 (a chunk's records and draws stay within the core's cache; 1024 and 2048 were the
-/// fastest at N = 10^7 in docs/scaling.md's measurement, 4096 and 8192 slower).
+/// 512 and at most 2048 (a chunk's draws stay within the core's cache, and a larger chunk defers more
+/// candidates: at N = 10^7, chunks of 8192 ran as fast as 2048 and deferred 6 times as many, 32768 were
+/// slower, docs/scaling.md).
 inline std::uint64_t round_chunk(std::uint64_t particles) noexcept {
   return std::clamp<std::uint64_t>(particles / 4096 / 64 * 64, 512, 2048);
 }
@@ -64,8 +66,7 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
   for (const auto& store : state.species) particles += store.size();
   const std::uint64_t chunk = round_chunk(particles);
   const std::uint64_t total = serial.total();
-  const auto threads = static_cast<std::uint64_t>(
-      std::min<std::size_t>(static_cast<std::size_t>(rounds.threads), BasicSpeciesStore<Real>::claim_lanes));
+  const auto threads = static_cast<std::uint64_t>(rounds.threads);
   if (threads < 2 || total < 2 * threads * chunk) {  // fewer candidates than two rounds: in order
     serial.run();
     serial.finish(omega_max, tallies);
@@ -85,6 +86,7 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
   }
   const auto deck = [&](std::uint64_t c) -> const typename Serial::PairDeck& { return decks[one_pair ? 0 : c]; };
   std::vector<Round*> stages(threads, nullptr);
+  std::vector<std::span<const std::uint32_t>> chunk_keys(threads);
 #pragma omp parallel num_threads(static_cast <int>(threads))
   {
     const auto team = static_cast<std::uint64_t>(omp_get_num_threads());
@@ -92,17 +94,13 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
     Round stage(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
     stages[t] = &stage;
     for (std::uint64_t r = 0; r < (chunks + team - 1) / team; ++r) {
-#pragma omp single
-      if (++rounds.tag == 0) {  // 65535 rounds: the tags start again from clean records
-        for (auto& store : state.species) store.clear_claims();
-        rounds.tag = 1;
-      }
       const std::uint64_t c = r * team + t;
       const std::uint64_t first = std::min(total, c * chunk), end = std::min(total, first + chunk);
       stage.begin_chunk(first, end, deck(std::min(c, chunks - 1)), serial.majorants());
-      stage.draw_and_claim(t, rounds.tag);
+      stage.draw_chunk();
+      chunk_keys[t] = stage.chunk_keys();
 #pragma omp barrier
-      stage.defer(t, rounds.tag);
+      stage.defer(std::span<const std::span<const std::uint32_t>>(chunk_keys).first(t));
       stage.run_chunk();
 #pragma omp barrier
 #pragma omp single

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -32,6 +33,9 @@ inline int own_replicas(const Scene& scene, const RunOptions& options) noexcept 
   const int n = scene.run.replicas, stride = options.replica_stride;
   return n > options.replica_offset ? (n - options.replica_offset + stride - 1) / stride : 0;
 }
+
+/// max_inside for a scheme whose replicas take any number of threads (the time-stepped scheme's concurrent rounds).
+inline constexpr int any_threads_inside = std::numeric_limits<int>::max();
 
 /// The threads first to replicas, one each; the threads left over to the replicas, up to `max_inside` each (1
 /// for a scheme that runs a replica on one thread).

@@ -294,18 +294,16 @@ PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int thread
   PlanExplanation out;
   out.instantiation = instantiation_name(plan, scene);
   // The run's own share (schemes/replica_runner.hpp): threads left over by the replicas go inside them where
-  // the time-stepped scheme's batched stage runs them in concurrent rounds, up to a record's claim lanes.
+  // the time-stepped scheme's batched stage runs them in concurrent rounds.
   const auto* stepped = std::get_if<SteppedPlan>(&plan.scheme);
   const bool rounds = stepped != nullptr && std::holds_alternative<BatchedStage>(stepped->backend);
-  const std::size_t lanes =
-      scene.run.storage == Storage::single_precision ? FloatSpeciesStore::claim_lanes : SpeciesStore::claim_lanes;
   RunOptions options;
   options.threads = threads;
   options.threads_per_replica = threads_per_replica;
-  const ThreadShare share = share_threads(scene, options, rounds ? static_cast<int>(lanes) : 1);
+  const ThreadShare share = share_threads(scene, options, rounds ? any_threads_inside : 1);
   out.replicas_in_flight = share.concurrent;
   out.threads_per_replica = share.inside;
-  out.claim_lanes = rounds ? static_cast<int>(lanes) : 1;
+  out.threads_inside = rounds;
   std::visit([&](const auto& scheme) { explain(scheme, scene, out); }, plan.scheme);
   return out;
 }

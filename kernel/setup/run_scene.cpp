@@ -35,7 +35,7 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Kernel& 
     }
     return result;
   } else {
-    const ThreadShare share = share_threads(scene, options, static_cast<int>(BasicSpeciesStore<Real>::claim_lanes));
+    const ThreadShare share = share_threads(scene, options, any_threads_inside);
     CollisionRoundCounts rounds;
     RunResult result =
         run_replicas(scene, options, share, [&](std::uint64_t replica, const std::vector<double>& times) {
