@@ -292,6 +292,13 @@ TEST_F(MpiRun, OneSystemOverRanksWithWhiteNoiseIsBitIdentical) {
   expect_identical_runs(ways(false), {"/temperature/replicas"}, " --spread particles");
 }
 
+TEST_F(MpiRun, OneSystemOfDisksOverRanksIsBitIdentical) {
+  write("scene.toml", edited(spread_scene(), {{"seed = 1", "seed = 1\ndimension = 2"}}) +
+                          "[thermostat]\nkind = \"white-noise\"\nbeta = 1.0\n");
+  expect_identical_runs(ways(false), {"/temperature/replicas", "/species/a/speed_distribution/counts"},
+                        " --spread particles");
+}
+
 TEST_F(MpiRun, IntruderIsBitIdentical) {
   write("scene.toml", R"([run]
 method = "gillespie"

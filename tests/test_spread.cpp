@@ -22,10 +22,11 @@ using granmc::testing::scene_from_toml;
 
 namespace {
 
-/// The scenes of these tests: ${thermostat} is the [thermostat] table, ${storage} run.storage, and
-/// ${particles} the number of particles.
+/// The scenes of these tests: ${thermostat} is the [thermostat] table, ${storage} run.storage, ${dimension}
+/// run.dimension, and ${particles} the number of particles.
 constexpr std::string_view cooling_text = R"(
   [run]
+  dimension = ${dimension}
   seed = 31
   replicas = 2
   t_end = 10.0  # T falls about 25-fold without the thermostat: several rescalings
@@ -46,13 +47,15 @@ constexpr std::string_view cooling_text = R"(
   histogram = { shells = 32, radius = 4.0 }
 )";
 
-/// A cooling gas of 10^4 particles with `thermostat` (the lines of its [thermostat] table).
-Scene cooling(std::string_view thermostat) {
-  return scene_from_toml(cooling_text, {{"storage", "double"}, {"particles", 10000}, {"thermostat", thermostat}});
+/// A cooling gas of 10^4 particles with `thermostat` (the lines of its [thermostat] table), spheres or disks.
+Scene cooling(std::string_view thermostat, int dimension = 3) {
+  return scene_from_toml(
+      cooling_text,
+      {{"storage", "double"}, {"particles", 10000}, {"thermostat", thermostat}, {"dimension", dimension}});
 }
 
-/// `one` receives the one-process run.
-void expect_same_chain(const Scene& s, RunResult& one) {
+/// `one` receives the one-process run; its first replica makes at least `min_collisions` collisions.
+void expect_same_chain(const Scene& s, RunResult& one, double min_collisions = 1e5) {
   ASSERT_TRUE(plan_refusal(s, Spread::particles).empty()) << plan_refusal(s, Spread::particles);
   one = run_scene(s, {});
   const SingleRank single;
@@ -74,7 +77,7 @@ void expect_same_chain(const Scene& s, RunResult& one) {
     }
     EXPECT_LT(b.energy_residual.value(), 1e-12);
   }
-  EXPECT_GT(one.replicas[0].collisions.back(), 1e5);
+  EXPECT_GT(one.replicas[0].collisions.back(), min_collisions);
 }
 
 }  // namespace
@@ -103,16 +106,26 @@ TEST(SpreadSystem, WhiteNoiseMakesTheCollisionsOfTheOneProcessStage) {  // the k
   EXPECT_GT(one.replicas[0].temperature.back(), 1.5 * one.replicas[0].temperature.front()) << "the noise heated";
 }
 
+TEST(SpreadSystem, DisksMakeTheCollisionsOfTheOneProcessStage) {
+  // The cooling disks' first replica makes about 6.7 10^4 collisions by t = 10 (the spheres' more than 10^5).
+  for (const char* thermostat : {R"(kind = "none")", R"(kind = "white-noise"
+                                                         beta = 2.0)"}) {
+    RunResult one;
+    expect_same_chain(cooling(thermostat, 2), one, 5e4);
+  }
+}
+
 TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
-  const Scene s =
-      scene_from_toml(cooling_text, {{"storage", "float"}, {"particles", 10000}, {"thermostat", R"(kind = "none")"}});
+  const Scene s = scene_from_toml(
+      cooling_text, {{"storage", "float"}, {"particles", 10000}, {"thermostat", R"(kind = "none")"}, {"dimension", 3}});
   EXPECT_NE(plan_refusal(s, Spread::particles).find("float"), std::string::npos);
-  const Scene two = scene_from_toml(std::string(cooling_text) + R"(
+  const Scene two = scene_from_toml(
+      std::string(cooling_text) + R"(
     [[species]]
     name = "b"
     particles = 10000
   )",
-                                    {{"storage", "double"}, {"particles", 10000}, {"thermostat", R"(kind = "none")"}});
+      {{"storage", "double"}, {"particles", 10000}, {"thermostat", R"(kind = "none")"}, {"dimension", 3}});
   EXPECT_NE(plan_refusal(two, Spread::particles).find("two species"), std::string::npos);
   const SingleRank single;
   RunOptions spread;
@@ -123,8 +136,9 @@ TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
 TEST(SpreadSystem, AStepNeedsAHandfulOfWaves) {
   // The cost model of docs/scaling.md: two exchanges per wave. A particle is in about 2C/N of a step's C
   // candidates, so chains of candidates that share particles stay short.
-  const Scene s =
-      scene_from_toml(cooling_text, {{"storage", "double"}, {"particles", 100000}, {"thermostat", R"(kind = "none")"}});
+  const Scene s = scene_from_toml(
+      cooling_text,
+      {{"storage", "double"}, {"particles", 100000}, {"thermostat", R"(kind = "none")"}, {"dimension", 3}});
   const SingleRank single;
   BasicDsmc<RankWaveBackend, double, HardSphere> sim(s, 0, single);
   const double t = 0.5;

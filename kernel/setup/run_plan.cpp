@@ -22,7 +22,7 @@ constexpr const char* supported_list =
     "\"white-noise\", packing_fraction = 0, no shear or relaxation; method = \"gillespie\" with an [intruder] of "
     "dimension 1 or 2 (the needle) in a \"gaussian\" or \"power-law\" bath; "
     "method = \"dsmc\" with an [intruder] of dimension 1 (002 sec. 4); run.storage \"double\" or \"float\" for "
-    "every gas scene; disks (run.dimension = 2) as spheres but for the spread over ranks (with a packing_fraction: "
+    "every gas scene; disks (run.dimension = 2) as spheres (with a packing_fraction: "
     "Henderson's chi, Jenkins and Mancini's chi_ij); rough spheres or "
     "disks (collision.tangential_restitution > "
     "-1) with method = \"dsmc\", one species, "
