@@ -706,9 +706,13 @@ class BatchedStage {
   std::uint64_t chunk_first_ = 0, chunk_end_ = 0;
   std::vector<Drawn> chunk_;
   std::vector<std::uint64_t> deferred_;
-  std::vector<std::uint32_t> keys_;
-  AddressFilter earlier_;
-  AddressSet held_back_;
+  // The round's sets, absent from a stage outside a round (the filter alone is 64 KB, and a stage is made per step).
+  struct NotInRound {};
+  template <class T>
+  using RoundOnly = std::conditional_t<in_round, T, NotInRound>;
+  [[no_unique_address]] RoundOnly<std::vector<std::uint32_t>> keys_;
+  [[no_unique_address]] RoundOnly<AddressFilter> earlier_;
+  [[no_unique_address]] RoundOnly<AddressSet> held_back_;
   BoundedList<Outcome> outcomes_;
   BoundedList<std::pair<typename Store::Particle, Vec3>> undo_;  // particle, velocity before a collision
   struct SpinBefore {
