@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc)
 GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
-.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 hcs-disks-alpha08 rough-disks-noise fig-shear-disks fig-mixture-disks fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-7-shear-rate fig-000-8-shear-rate fig-000-sec5 fig-000-6-elastic fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-1 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
+.PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 hcs-disks-alpha08 rough-disks-noise rough-mixture fig-shear-disks fig-mixture-disks fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-7-shear-rate fig-000-8-shear-rate fig-000-sec5 fig-000-6-elastic fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-1 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
 	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted tails-disks-weighted intruder-cost accuracy-cost bench-effects bench-threads bench-models stability
 
 all: build
@@ -43,6 +43,10 @@ hcs-disks-alpha08: build
 # Rough hard disks under split white noise against the published DSMC/EDMD (docs/validation.md, "Rough particles").
 rough-disks-noise: build
 	$(PYTHON) drivers/rough_split_noise.py --granmc $(GRANMC)
+
+# A rough binary mixture's cooling state against the Maxwellian theory (docs/validation.md, "Rough particles").
+rough-mixture: build
+	$(PYTHON) drivers/rough_mixture.py --granmc $(GRANMC)
 
 # Paper 000's figures (drivers/figure.py; results/000_fig<k>/figure.png, table.md). Runs are cached per
 # point: a second call only redoes the theory and the plot. Runtimes in docs/validation.md.

@@ -5,6 +5,7 @@
 #include "kernel/theory/intruder.hpp"
 #include "kernel/theory/mixture_viscosity.hpp"
 #include "kernel/theory/rough.hpp"
+#include "kernel/theory/scene_theory.hpp"
 #include "kernel/theory/sonine.hpp"
 #include "kernel/theory/sonine_hcs.hpp"
 #include "kernel/theory/steady_shear.hpp"
@@ -274,38 +275,56 @@ void add_steady_shear(const Scene& scene, const std::vector<double>& /*times*/, 
                           "sec. 5)");
 }
 
-/// Rough particles, one species of hard spheres or disks: theta = T_r / T and the cooling rates of the cooling
-/// state, or theta under white noise on translation (docs/derivations/rough-hcs.md).
+/// Rough hard spheres or disks, one or two species: theta = T_r / T and the cooling rate of the cooling state,
+/// or theta under white noise; for two species theta of each and T_1 / T_2 (docs/derivations/rough-hcs.md).
 void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j, nlohmann::json& applies) {
-  if (scene.species.size() != 1 || scene.collision.kernel != CollisionKernel::hard_sphere || scene.shear_rate != 0.0)
-    return;
+  if (scene.collision.kernel != CollisionKernel::hard_sphere || scene.shear_rate != 0.0) return;
   const CollisionConfig& c = scene.collision;
   const int d = scene.run.dimension;
   const double alpha = c.restitution[0][0], beta = c.tangential_restitution, kappa = c.reduced_inertia;
-  nlohmann::json r = {{"alpha", alpha},
-                      {"beta", beta},
-                      {"kappa", kappa},
-                      {"tangential_factor", theory::rough_tangential_factor(beta, kappa)}};
-  const std::string particles = d == 2 ? "rough hard disks" : "rough hard spheres";
+  const bool mixture = scene.species.size() == 2;
+  nlohmann::json r = {{"beta", beta}, {"kappa", kappa}};
+  if (!mixture) {
+    r["alpha"] = alpha;
+    r["tangential_factor"] = theory::rough_tangential_factor(beta, kappa);
+  }
+  const std::string particles = std::string(mixture ? "binary mixture of " : "monodisperse ") +
+                                (d == 2 ? "rough hard disks" : "rough hard spheres");
+  const theory::RoughMixture m{mixture ? theory::mixture_parameters(scene) : theory::MixtureParameters{}, beta, kappa};
+  auto species_values = [](const theory::RoughMixtureState& s) {
+    return nlohmann::json::array({s.theta[0], s.theta[1]});
+  };
   if (scene.thermostat.kind != ThermostatKind::white_noise) {
     // The Gaussian thermostat scales translation and spins alike, so its steady state is the cooling state's
     // in scaled variables (docs/physics.md, "Rough particles").
-    const double theta = theory::rough_hcs_theta(alpha, beta, kappa, d);
-    const theory::RoughCoolingRates z = theory::rough_cooling_rates(alpha, beta, kappa, theta, d);
-    r["theta_hcs"] = theta;
-    r["cooling_rate_over_nu_hcs"] = z.translation;
-    applies.push_back("homogeneous cooling state (or its scaled state under the Gaussian thermostat), monodisperse " +
-                      particles +
-                      ", Maxwellian approximation: T_rot / T_tr and the cooling rate (Huthmann and Zippelius 1997; "
-                      "docs/derivations/rough-hcs.md)");
+    if (mixture) {
+      const theory::RoughMixtureState s = theory::rough_mixture_hcs(m);
+      r["theta_hcs"] = species_values(s);
+      r["temperature_ratio_hcs"] = s.temperature_ratio;
+    } else {
+      const double theta = theory::rough_hcs_theta(alpha, beta, kappa, d);
+      r["theta_hcs"] = theta;
+      r["cooling_rate_over_nu_hcs"] = theory::rough_cooling_rates(alpha, beta, kappa, theta, d).translation;
+    }
+    const std::string what = mixture ? "T_rot / T_tr of each species and T_1 / T_2 (docs/derivations/rough-hcs.md)"
+                                     : "T_rot / T_tr and the cooling rate (Huthmann and Zippelius 1997; "
+                                       "docs/derivations/rough-hcs.md)";
+    applies.push_back("homogeneous cooling state (or its scaled state under the Gaussian thermostat), " + particles +
+                      ", Maxwellian approximation: " + what);
   } else {
     const double share = scene.thermostat.rotational_share;
     r["rotational_share"] = share;
-    r["theta_white_noise"] = theory::rough_split_noise_theta(alpha, beta, kappa, share, d);
+    if (mixture) {
+      const theory::RoughMixtureState s = theory::rough_mixture_white_noise(m, share);
+      r["theta_white_noise"] = species_values(s);
+      r["temperature_ratio_white_noise"] = s.temperature_ratio;
+    } else {
+      r["theta_white_noise"] = theory::rough_split_noise_theta(alpha, beta, kappa, share, d);
+    }
     applies.push_back(
         std::string(share > 0.0 ? "white noise split between translation and rotation" : "white noise on translation") +
-        ", monodisperse " + particles +
-        ", Maxwellian approximation: the steady T_rot / T_tr (docs/derivations/rough-hcs.md)");
+        ", " + particles + ", Maxwellian approximation: the steady T_rot / T_tr" +
+        (mixture ? " of each species and T_1 / T_2" : "") + " (docs/derivations/rough-hcs.md)");
   }
   j["rough"] = r;
 }

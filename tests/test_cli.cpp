@@ -181,15 +181,27 @@ TEST_F(Cli, RoughParticlesHaveTheirTheoryAndRun) {
   write("smooth.toml", good_scene);
   ASSERT_EQ(granmc("run smooth.toml --summary smooth.json --quiet").status, 0);
   EXPECT_FALSE(nlohmann::json::parse(slurp(dir_ / "smooth.json"))["species"][0].contains("rotational_ratio"));
-  // What rough particles do not run yet is refused with the key named.
+  // A mixture of rough particles runs, with theta per species in its theory and its summary.
   write("rough_mixture.toml", good_scene + "tangential_restitution = 0.5\n" + R"(
 [[species]]
 name = "b"
 particles = 500
+mass = 2.0
 )");
-  const Outcome mixture = granmc("run rough_mixture.toml");
-  EXPECT_EQ(mixture.status, 2);
-  EXPECT_NE(mixture.stderr_text.find("collision.tangential_restitution"), std::string::npos) << mixture.stderr_text;
+  const Outcome mixture_theory = granmc("theory rough_mixture.toml");
+  ASSERT_EQ(mixture_theory.status, 0) << mixture_theory.stderr_text;
+  const nlohmann::json m = nlohmann::json::parse(mixture_theory.stdout_text)["rough"];
+  EXPECT_EQ(m["theta_hcs"].size(), 2u) << m;
+  EXPECT_GT(m["temperature_ratio_hcs"].get<double>(), 0.0) << m;
+  ASSERT_EQ(granmc("run rough_mixture.toml --summary rough_mixture.json --quiet").status, 0);
+  const nlohmann::json mixture_summary = nlohmann::json::parse(slurp(dir_ / "rough_mixture.json"));
+  for (const nlohmann::json& sp : mixture_summary["species"])
+    EXPECT_GT(sp["rotational_ratio"]["mean"].get<double>(), 0.0);
+  // What rough particles do not run yet is refused with the key named.
+  write("rough_event.toml", with("t_end = 0.5", "t_end = 0.5\nmethod = \"event\"") + "tangential_restitution = 0.5\n");
+  const Outcome event = granmc("run rough_event.toml");
+  EXPECT_EQ(event.status, 2);
+  EXPECT_NE(event.stderr_text.find("collision.tangential_restitution"), std::string::npos) << event.stderr_text;
 }
 
 TEST_F(Cli, BathPrintsTheIntrudersFluxesAndSampledLaw) {  // 002 Figs. 1-2 (drivers/plot_bath.py)

@@ -1,8 +1,9 @@
 // Rough particles in the time-stepped scheme (collide/rough_rule.hpp) against what is exact and what is
 // published:
-//  - perfectly rough elastic particles (alpha = beta = 1) conserve translational plus rotational energy over a
-//    run, and the translational bookkeeping closes (energy_residual);
-//  - the Gaussian thermostat holds T and gives the cooling state's theta;
+//  - perfectly rough elastic particles (alpha = beta = 1), one species or a mixture, conserve translational plus
+//    rotational energy over a run, and the translational bookkeeping closes (energy_residual);
+//  - the Gaussian thermostat holds T and gives the cooling state's theta, also in each of two species of the same
+//    particles;
 //  - rough hard disks (kappa = 1/2) under white noise on translation, and with half its power on the spins (the
 //    splitting thermostat, effects/white_noise.hpp): theta = T_rot / T_tr against the DSMC of Megias and Santos,
 //    Front. Phys. 10 (2022) 971671, data files `Steady states/theta_st_DSMC_{alpha}_{beta}.txt` of
@@ -30,6 +31,19 @@ using granmc::testing::scene_from_toml;
 using granmc::testing::within_ci;
 
 namespace {
+
+/// The scene with its one species split into two of the same particles, each with half the particles and half
+/// the density (and, if given, the second one's mass and diameter changed).
+Scene split_into_two_species(Scene s, double mass = 1.0, double diameter = 1.0) {
+  SpeciesConfig half = s.species[0];
+  half.particles /= 2;
+  half.density /= 2.0;
+  s.species = {half, half};
+  s.species[1].name = "second";
+  s.species[1].mass = mass;
+  s.species[1].diameter = diameter;
+  return s;
+}
 
 /// `heated`: white noise (beta = 1) with a share `rotational_share` of its power on the spins, else no thermostat.
 Scene rough_disks(double alpha, double beta, double dt, bool heated, int particles, int replicas, double t_end,
@@ -66,14 +80,14 @@ Scene rough_disks(double alpha, double beta, double dt, bool heated, int particl
                                                           {"beta", beta}});
 }
 
-/// Per replica, the time average of T_rot / T over the stationary samples.
-std::vector<double> stationary_theta(const RunResult& r) {
+/// Per replica, the time average of T_rot / T of species i over the stationary samples.
+std::vector<double> stationary_theta(const RunResult& r, std::size_t i = 0) {
   std::vector<double> theta;
   const std::size_t first = first_stationary_sample(r.times.size());
   for (const ReplicaSeries& s : r.replicas) {
     double sum = 0.0;
     for (std::size_t k = first; k < r.times.size(); ++k)
-      sum += s.species[0].rotational_temperature[k] / s.species[0].temperature[k];
+      sum += s.species[i].rotational_temperature[k] / s.species[i].temperature[k];
     theta.push_back(sum / static_cast<double>(r.times.size() - first));
   }
   return theta;
@@ -82,24 +96,32 @@ std::vector<double> stationary_theta(const RunResult& r) {
 }  // namespace
 
 TEST(RoughParticles, PerfectlyRoughElasticParticlesConserveTheirEnergy) {
-  // No thermostat, alpha = beta = 1: (d/2) T + (d_r/2) T_rot keeps its value at t = 0 to rounding (the
-  // translational energy moves to rotation and back); spheres and disks.
-  for (int d : {3, 2}) {
-    Scene s = rough_disks(1.0, 1.0, 0.01, false, 2000, 2, 5.0);
-    s.run.dimension = d;
-    s.collision.reduced_inertia = d == 3 ? 0.4 : 0.5;
-    const RunResult r = run_scene(s, {});
-    const double d_r = d == 3 ? 3.0 : 1.0;
-    for (const ReplicaSeries& rep : r.replicas) {
-      ASSERT_GT(rep.collisions.back(), 10000.0);  // several collisions per particle
-      const auto energy = [&](std::size_t k) {
-        return d * rep.species[0].temperature[k] + d_r * rep.species[0].rotational_temperature[k];
-      };
-      for (std::size_t k = 1; k < r.times.size(); ++k)
-        EXPECT_NEAR(energy(k) / energy(0), 1.0, 1e-12) << "d = " << d << ", t = " << r.times[k];
-      EXPECT_LT(*rep.energy_residual, energy_balance_tolerance);
+  // No thermostat, alpha = beta = 1: sum_i N_i [(d/2) T_i + (d_r/2) T_rot,i] keeps its value at t = 0 to rounding
+  // (the translational energy moves to rotation and back, and between the species); spheres and disks, one
+  // species and a mixture of unequal masses and diameters.
+  for (int d : {3, 2})
+    for (const bool mixture : {false, true}) {
+      Scene s = rough_disks(1.0, 1.0, 0.01, false, 2000, 2, 5.0);
+      s.run.dimension = d;
+      s.collision.reduced_inertia = d == 3 ? 0.4 : 0.5;
+      if (mixture) s = split_into_two_species(s, 3.0, 1.4);
+      const RunResult r = run_scene(s, {});
+      const double d_r = d == 3 ? 3.0 : 1.0;
+      SCOPED_TRACE("d = " + std::to_string(d) + (mixture ? ", mixture" : ""));
+      for (const ReplicaSeries& rep : r.replicas) {
+        ASSERT_GT(rep.collisions.back(), 10000.0);  // several collisions per particle
+        const auto energy = [&](std::size_t k) {
+          double e = 0.0;
+          for (std::size_t i = 0; i < s.species.size(); ++i)
+            e += static_cast<double>(s.species[i].particles) *
+                 (d * rep.species[i].temperature[k] + d_r * rep.species[i].rotational_temperature[k]);
+          return e;
+        };
+        for (std::size_t k = 1; k < r.times.size(); ++k)
+          EXPECT_NEAR(energy(k) / energy(0), 1.0, 1e-12) << "t = " << r.times[k];
+        EXPECT_LT(*rep.energy_residual, energy_balance_tolerance);
+      }
     }
-  }
 }
 
 TEST(RoughParticles, ShearedRoughParticlesKeepMomentumAndTheirBookkeeping) {
@@ -155,6 +177,25 @@ TEST(RoughParticles, GaussianThermostatHoldsTheCoolingStatesTheta) {
   const MeanCI difference{theta_heated.mean - theta_cooling.mean, std::hypot(theta_heated.ci, theta_cooling.ci)};
   // Bound: the CI of the difference measured today, 0.0062, times 1.5.
   EXPECT_TRUE(within_ci("theta, Gaussian thermostat minus cooling", difference, 0.0, 0.0093));
+}
+
+TEST(RoughParticles, TwoSpeciesOfTheSameParticlesAreTheMonodisperseGas) {
+  // The species label does not change the physics: rough disks (alpha = 0.9, beta = 0) split into two species of
+  // the same particles hold, under the Gaussian thermostat, the theta of the one-species gas, in each species.
+  // It checks the mixture's pair selection with spins (the four ordered pairs, their rates and coefficients).
+  Scene one = rough_disks(0.9, 0.0, 0.01, false, 10000, 16, 16.0);
+  one.thermostat.kind = ThermostatKind::gaussian;
+  one.thermostat.zeta_is_cooling_rate = true;
+  const RunResult a = run_scene(one, {}), b = run_scene(split_into_two_species(one), {});
+  const MeanCI theta = replica_mean(stationary_theta(a));
+  for (std::size_t i = 0; i < 2; ++i) {
+    const MeanCI theta_i = replica_mean(stationary_theta(b, i));
+    std::printf("theta: one species %.5f +- %.5f, species %zu of two %.5f +- %.5f\n", theta.mean, theta.ci, i,
+                theta_i.mean, theta_i.ci);
+    const MeanCI difference{theta_i.mean - theta.mean, std::hypot(theta_i.ci, theta.ci)};
+    // Bound: the CIs of the difference measured today, 0.0048 and 0.0047, times 1.5.
+    EXPECT_TRUE(within_ci("theta, species i of two minus one species", difference, 0.0, 0.0072));
+  }
 }
 
 namespace {

@@ -14,7 +14,9 @@
 
 #include <gtest/gtest.h>
 
+#include "kernel/analysis/replica_statistics.hpp"
 #include "kernel/collide/hard_sphere.hpp"
+#include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/collide/rough_rule.hpp"
@@ -22,6 +24,8 @@
 #include "kernel/core/sampling.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/initial_state.hpp"
+#include "kernel/theory/rough.hpp"
+#include "tests/statistical_check.hpp"
 #include "tests/test_scenes.hpp"
 
 using namespace granmc;
@@ -131,6 +135,115 @@ TEST(RoughRule, TheTangentialImpulseIsTheTheorysFactor) {
   const double kappa = scene.collision.reduced_inertia;
   EXPECT_DOUBLE_EQ(c.tangential_k, kappa * 1.3 / (2.0 * (1.0 + kappa)));
   EXPECT_DOUBLE_EQ(c.spin_k, c.tangential_k / kappa);
+}
+
+TEST(RoughRule, MixtureMeansAreTheMaxwellianRatesOfTheTheory) {
+  // Pairs drawn from Maxwellians at four unequal temperatures (T_i, T_r,i of two species of unequal masses and
+  // diameters, unequal alpha_ij), sigma-hat drawn as the stage draws it (density Theta(g.sigma) g.sigma), each
+  // collision weighted by its rate n_j chi_ij sigma_ij^(d-1) c_d |g| (c_d = pi for spheres, 2 for disks): the
+  // Monte Carlo mean of the energy changes of the rule, (2/d) sum_j rate x dK_tr,i and (2/d_r) sum_j rate x
+  // dK_rot,i, is theory::rough_mixture_collision_rates exactly in expectation (its Maxwellian averages are exact
+  // for Maxwellian pairs). Tolerance: lambda_p standard errors of the mean over 10^6 pairs per species pair.
+  constexpr int samples = 1000000;
+  for (int d : {3, 2}) {
+    constexpr std::string_view text = R"(
+      [run]
+      t_end = 1.0
+      dt = 1.0
+      dimension = ${d}
+
+      [[species]]
+      name = "light"
+      density = 0.6
+      particles = 100
+
+      [[species]]
+      name = "heavy"
+      mass = 3.0
+      diameter = 1.6
+      density = 0.3
+      particles = 50
+
+      [collision]
+      restitution = [[0.9, 0.8], [0.8, 0.7]]
+      tangential_restitution = 0.3
+    )";
+    const Scene scene = scene_from_toml(text, {{"d", d}});
+    const double kappa = scene.collision.reduced_inertia;
+    theory::RoughMixture mixture;
+    mixture.gas.dimension = d;
+    mixture.beta = scene.collision.tangential_restitution;
+    mixture.kappa = kappa;
+    for (int i = 0; i < 2; ++i) {
+      mixture.gas.mass[i] = scene.species[i].mass;
+      mixture.gas.diameter[i] = scene.species[i].diameter;
+      mixture.gas.density[i] = scene.species[i].density;
+      for (int j = 0; j < 2; ++j)
+        mixture.gas.alpha[i][j] = scene.collision.restitution[i][j], mixture.gas.chi[i][j] = 1.0;
+    }
+    const theory::RoughTemperatures temperature{{1.0, 1.7}, {0.6, 1.3}};
+    const theory::RoughTemperatures expected = theory::rough_mixture_collision_rates(mixture, temperature);
+    const double rotations = d == 3 ? 3.0 : 1.0, c_d = d == 3 ? std::numbers::pi : 2.0;
+    const RandomStream rng(17, 0);
+    double mean[2][2] = {}, variance[2][2] = {};  // species i, [translation, rotation]: the estimate and its SE^2
+    for (const PairCoefficients& pair : pair_coefficients(scene)) {
+      const int i = pair.i, j = pair.j;
+      const double mi = scene.species[i].mass, mj = scene.species[j].mass;
+      const double rate = scene.species[j].density * c_d * std::pow(pair.diameter, d - 1);
+      double sum[2] = {0.0, 0.0}, sum2[2] = {0.0, 0.0};  // rate x dK_tr,i and rate x dK_rot,i
+      for (int t = 0; t < samples; ++t) {
+        const auto normals = [&](std::uint16_t sub) {
+          const RandomBlock w = rng.block(RngPurpose::collision_pair, sub, static_cast<std::uint64_t>(t),
+                                          static_cast<std::uint64_t>(2 * i + j));
+          Vec3 z;
+          double spare = 0.0;
+          standard_normal_pair(uniform_open(w[0]), uniform_open(w[1]), z.x, z.y);
+          standard_normal_pair(uniform_open(w[2]), uniform_open(w[3]), z.z, spare);
+          return z;
+        };
+        const auto planar = [&](Vec3 v) { return d == 3 ? v : Vec3{v.x, v.y, 0.0}; };
+        const auto spin = [&](Vec3 s) { return d == 3 ? s : Vec3{0.0, 0.0, s.z}; };
+        Vec3 vk = std::sqrt(temperature.translation[i] / mi) * planar(normals(0));
+        Vec3 vl = std::sqrt(temperature.translation[j] / mj) * planar(normals(1));
+        Vec3 sk = std::sqrt(temperature.rotation[i] / (kappa * mi)) * spin(normals(2));
+        Vec3 sl = std::sqrt(temperature.rotation[j] / (kappa * mj)) * spin(normals(3));
+        const RandomBlock u = rng.block(RngPurpose::collision_pair, 4, static_cast<std::uint64_t>(t),
+                                        static_cast<std::uint64_t>(2 * i + j));
+        const Vec3 g = vk - vl;
+        const double g_norm = norm(g);
+        const ImpactDirection id =
+            d == 3 ? impact_direction<3>(
+                         g, g_norm, impact_variate<3, ImpactLaw::hard_core>(uniform_open(u[0]), uniform_open(u[1])))
+                   : impact_direction<2>(
+                         g, g_norm, impact_variate<2, ImpactLaw::hard_core>(uniform_open(u[0]), uniform_open(u[1])));
+        if (!(id.g_sigma > 0.0)) continue;  // a zero of measure zero: the sample counts with no change
+        const double translational = 0.5 * mi * norm2(vk), rotational = 0.5 * kappa * mi * norm2(sk);
+        rough_collision(vk, vl, sk, sl, id.sigma, id.g_sigma, pair);
+        const double change[2] = {rate * g_norm * (0.5 * mi * norm2(vk) - translational),
+                                  rate * g_norm * (0.5 * kappa * mi * norm2(sk) - rotational)};
+        for (int a = 0; a < 2; ++a) sum[a] += change[a], sum2[a] += change[a] * change[a];
+      }
+      for (int a = 0; a < 2; ++a) {  // (2/d) or (2/d_r) times the mean over the pairs
+        const double scale = 2.0 / (a == 0 ? d : rotations), m = sum[a] / samples;
+        mean[i][a] += scale * m;
+        variance[i][a] += scale * scale * (sum2[a] / samples - m * m) / samples;
+      }
+    }
+    for (int i = 0; i < 2; ++i) {
+      const double theory_rate[2] = {expected.translation[i], expected.rotation[i]};
+      for (int a = 0; a < 2; ++a) {
+        const double ci = confidence_lambda_p * std::sqrt(variance[i][a]);
+        SCOPED_TRACE("d = " + std::to_string(d) + ", species " + std::to_string(i) +
+                     (a == 0 ? ", dT/dt" : ", dT_r/dt"));
+        // The bound: the CI measured today over |rate| (spheres 0.021, 0.021, 0.0073, 0.0073; disks 0.036, 0.037,
+        // 0.0087, 0.0116 for species 0 and 1, translation and rotation), times 1.5.
+        constexpr double relative_ci_today[2][2][2] = {{{0.0358, 0.0365}, {0.0087, 0.0116}},
+                                                       {{0.0210, 0.0208}, {0.0073, 0.0073}}};
+        const double bound = 1.5 * relative_ci_today[d - 2][i][a] * std::fabs(theory_rate[a]);
+        EXPECT_TRUE(granmc::testing::within_ci("rate", mean[i][a], ci, theory_rate[a], bound));
+      }
+    }
+  }
 }
 
 TEST(RoughRule, SmoothLimitIsTheSmoothRuleBitForBit) {

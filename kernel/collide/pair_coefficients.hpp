@@ -18,8 +18,8 @@ struct PairCoefficients {
   double reduced_mass = 0.0;    // m_i m_j / (m_i + m_j): the impulse is (1 + alpha_ij) reduced_mass (g.sigma)
   double diameter = 0.0;        // sigma_ij = (sigma_i + sigma_j) / 2
   // Rough particles (collide/rough_rule.hpp), zero for smooth ones: the tangential impulse is
-  // -tangential mu_ij G_t, tangential = (1 + beta) / (1 + mu_ij (1 / (kappa m_i) + 1 / (kappa m_j))), which moves
-  // particle k by tangential_k = mu_ji tangential and l by tangential_l = mu_ij tangential, and turns their
+  // -tangential reduced_mass G_t, tangential = (1 + beta) / (1 + reduced_mass (1 / (kappa m_i) + 1 / (kappa m_j))),
+  // which moves particle k by tangential_k = mu_ji tangential and l by tangential_l = mu_ij tangential, and turns their
   // spins by spin_k = tangential_k / kappa and spin_l = tangential_l / kappa.
   double tangential = 0.0;
   double tangential_k = 0.0, tangential_l = 0.0;

@@ -25,7 +25,7 @@ constexpr const char* supported_list =
     "every gas scene; disks (run.dimension = 2) as spheres (with a packing_fraction: "
     "Henderson's chi, Jenkins and Mancini's chi_ij); rough spheres or "
     "disks (collision.tangential_restitution > "
-    "-1) with method = \"dsmc\", one species, "
+    "-1) with method = \"dsmc\", one or two species, "
     "thermostat \"none\", \"gaussian\" (scaling velocities and spins alike) or \"white-noise\" (on translation, or "
     "a share on the spins), a dilute [shear] rate (no packing_fraction)";
 
@@ -175,7 +175,6 @@ RunPlan make_plan(const Scene& scene, Spread spread) {
       refuse(
           "rough particles (collision.tangential_restitution > -1) other than hard spheres or disks with "
           "collision.rate = 0");
-    if (scene.species.size() != 1) refuse("rough particles (collision.tangential_restitution > -1) of two species");
   }
   if (scene.intruder) {
     SchemeChoice scheme = intruder_plan(scene);

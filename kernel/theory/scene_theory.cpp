@@ -29,9 +29,7 @@ std::optional<ScaledStatePrediction> scaled_state(const Scene& scene) {
   return ScaledStatePrediction{hcs_a2(alpha, d), hcs_a2_model_error(alpha, d), second.a2, second.a3};
 }
 
-std::optional<MixturePrediction> mixture_state(const Scene& scene) {
-  // The mixture theory (docs/derivations/mixture-hcs.md) is that of spheres; for disks its Maxwellian balance.
-  if (scene.species.size() != 2 || !hcs_scaled_state(scene)) return std::nullopt;
+MixtureParameters mixture_parameters(const Scene& scene) {
   const bool disks = scene.run.dimension == 2;
   MixtureParameters mp{};
   mp.dimension = scene.run.dimension;
@@ -41,7 +39,6 @@ std::optional<MixturePrediction> mixture_state(const Scene& scene) {
     x.push_back(s.density / n);
     sigma.push_back(s.diameter);
   }
-  MixturePrediction p;
   for (int i = 0; i < 2; ++i) {
     mp.mass[i] = scene.species[i].mass;
     mp.diameter[i] = scene.species[i].diameter;
@@ -49,11 +46,21 @@ std::optional<MixturePrediction> mixture_state(const Scene& scene) {
     for (int j = 0; j < 2; ++j) {
       mp.alpha[i][j] = scene.collision.restitution[i][j];
       const double phi = scene.collision.packing_fraction;
-      p.chi[i][j] = mp.chi[i][j] = !(phi > 0.0) ? 1.0
-                                   : disks      ? enskog_chi_disks(phi, x, sigma, i, j)
-                                                : enskog_chi(phi, x, sigma, i, j);
+      mp.chi[i][j] = !(phi > 0.0) ? 1.0
+                     : disks      ? enskog_chi_disks(phi, x, sigma, i, j)
+                                  : enskog_chi(phi, x, sigma, i, j);
     }
   }
+  return mp;
+}
+
+std::optional<MixturePrediction> mixture_state(const Scene& scene) {
+  // The mixture theory (docs/derivations/mixture-hcs.md) is that of spheres; for disks its Maxwellian balance.
+  if (scene.species.size() != 2 || !hcs_scaled_state(scene)) return std::nullopt;
+  const MixtureParameters mp = mixture_parameters(scene);
+  MixturePrediction p;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) p.chi[i][j] = mp.chi[i][j];
   p.temperature_ratio_maxwell = temperature_ratio_maxwell(mp);
   p.first_sonine = mixture_first_sonine(mp);
   return p;

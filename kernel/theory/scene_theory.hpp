@@ -49,4 +49,8 @@ struct MixturePrediction {
 std::optional<ScaledStatePrediction> scaled_state(const Scene& scene);
 std::optional<MixturePrediction> mixture_state(const Scene& scene);
 
+/// The mechanical parameters of a two-species scene (chi_ij of its packing_fraction: Carnahan-Starling's for
+/// spheres, Jenkins and Mancini's for disks; 1 when dilute).
+MixtureParameters mixture_parameters(const Scene& scene);
+
 }  // namespace granmc::theory
