@@ -299,6 +299,18 @@ TEST_F(MpiRun, OneSystemOfDisksOverRanksIsBitIdentical) {
                         " --spread particles");
 }
 
+TEST_F(MpiRun, OneSystemOfRoughParticlesOverRanksIsBitIdentical) {
+  // Rough spheres (beta = 0) under white noise with half its power on the spins: the spins of partners held
+  // elsewhere travel with their velocities, the kicks of the spins are drawn per global index.
+  write("scene.toml",
+        edited(spread_scene(), {{"restitution = 0.7", "restitution = 0.7\ntangential_restitution = 0.0"}}) +
+            "[thermostat]\nkind = \"white-noise\"\nbeta = 1.0\nrotational_share = 0.5\n");
+  expect_identical_runs(ways(false),
+                        {"/temperature/replicas", "/species/a/rotational_temperature/replicas",
+                         "/species/a/a11/replicas", "/species/a/speed_distribution/counts"},
+                        " --spread particles");
+}
+
 TEST_F(MpiRun, IntruderIsBitIdentical) {
   write("scene.toml", R"([run]
 method = "gillespie"

@@ -75,6 +75,13 @@ void expect_same_chain(const Scene& s, RunResult& one, double min_collisions = 1
       EXPECT_NEAR(b.temperature[k] / a.temperature[k], 1.0, 1e-12) << "replica " << r << ", sample " << k;
       EXPECT_NEAR(b.species[0].a2[k], a.species[0].a2[k], 1e-12) << "replica " << r << ", sample " << k;
     }
+    const SpeciesSeries &sa = a.species[0], &sb = b.species[0];
+    ASSERT_EQ(sb.rotational_temperature.size(), sa.rotational_temperature.size());  // rough particles: spins
+    for (std::size_t k = 0; k < sa.rotational_temperature.size(); ++k) {
+      EXPECT_NEAR(sb.rotational_temperature[k] / sa.rotational_temperature[k], 1.0, 1e-12) << "sample " << k;
+      EXPECT_NEAR(sb.a02[k], sa.a02[k], 1e-12) << "sample " << k;
+      EXPECT_NEAR(sb.a11[k], sa.a11[k], 1e-12) << "sample " << k;
+    }
     EXPECT_LT(b.energy_residual.value(), 1e-12);
   }
   EXPECT_GT(one.replicas[0].collisions.back(), min_collisions);
@@ -113,6 +120,25 @@ TEST(SpreadSystem, DisksMakeTheCollisionsOfTheOneProcessStage) {
     RunResult one;
     expect_same_chain(cooling(thermostat, 2), one, 5e4);
   }
+}
+
+TEST(SpreadSystem, RoughParticlesMakeTheCollisionsOfTheOneProcessStage) {
+  // Rough spheres and disks (beta = 0): a partner's spin travels with its velocity; without a thermostat and
+  // under white noise with half its power on the spins (their kicks: the same normals per global index).
+  for (int d : {3, 2})
+    for (const bool heated : {false, true}) {
+      Scene s = cooling(heated ? R"(kind = "white-noise"
+                                    beta = 2.0)"
+                               : R"(kind = "none")",
+                        d);
+      s.collision.tangential_restitution = 0.0;
+      s.collision.reduced_inertia = d == 3 ? 0.4 : 0.5;
+      if (heated) s.thermostat.rotational_share = 0.5;
+      SCOPED_TRACE("d = " + std::to_string(d) + (heated ? ", white noise" : ""));
+      RunResult one;
+      expect_same_chain(s, one, 5e4);
+      EXPECT_FALSE(one.replicas[0].species[0].rotational_temperature.empty());
+    }
 }
 
 TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {

@@ -51,22 +51,14 @@ Observed record_observation(const Scene& scene, const VelocityScale& scale,
   return {totals, theta_mix};
 }
 
-namespace {
-
-/// The rotational temperature and spin cumulants of species i of rough particles: with s = (sigma / 2) omega
-/// and I = kappa m sigma^2 / 4, T_rot = I <omega^2> / d_r = kappa m <s^2> / d_r.
-template <class Real>
-void record_spins(const Scene& scene, const BasicGasState<Real>& state, std::size_t i, const Vec3& flow,
-                  const SpeciesMoments& about_flow, SpeciesSeries& s) {
+void record_spin_observation(const Scene& scene, const VelocityScale& scale, std::size_t i, const SpinMoments& m,
+                             double mean_c2, SpeciesSeries& s) {
   const int d_r = scene.run.dimension == 3 ? 3 : 1;  // rotational degrees of freedom
-  const SpinMoments m = spin_moments(state.species[i], flow);
   const double theta = scene.collision.reduced_inertia * scene.species[i].mass * m.mean_s2() / d_r;
-  s.rotational_temperature.push_back(std::exp(state.scale.log_temperature(theta)));
+  s.rotational_temperature.push_back(std::exp(scale.log_temperature(theta)));
   s.a02.push_back(m.a02(d_r));
-  s.a11.push_back(m.a11(about_flow.mean_c2()));
+  s.a11.push_back(m.a11(mean_c2));
 }
-
-}  // namespace
 
 template <class Real>
 GasTotals observe_gas(const Scene& scene, const BasicGasState<Real>& state, ReplicaSeries& series, bool histogram) {
@@ -78,7 +70,9 @@ GasTotals observe_gas(const Scene& scene, const BasicGasState<Real>& state, Repl
   const std::vector<SpeciesMoments> about_flow = gas_moments(state, flow);
   const Observed o = record_observation(scene, state.scale, about_origin, about_flow, series);
   for (std::size_t i = 0; i < state.species.size(); ++i)
-    if (state.species[i].has_spins()) record_spins(scene, state, i, flow, about_flow[i], series.species[i]);
+    if (state.species[i].has_spins())
+      record_spin_observation(scene, state.scale, i, spin_moments(state.species[i], flow), about_flow[i].mean_c2(),
+                              series.species[i]);
   if (histogram) {
     const double unit = histogram_speed_unit(scene, state.scale, o.theta_mixture);
     for (std::size_t i = 0; i < state.species.size(); ++i) {

@@ -35,6 +35,12 @@ Observed record_observation(const Scene& scene, const VelocityScale& scale,
                             const std::vector<SpeciesMoments>& about_origin,
                             const std::vector<SpeciesMoments>& about_flow, ReplicaSeries& series);
 
+/// Appends the rotational temperature and spin cumulants of species i of rough particles to its series, from
+/// its spin moments about the flow velocity and <|c - flow|^2> of the same particles: with s = (sigma / 2) omega
+/// and I = kappa m sigma^2 / 4, T_rot = I <omega^2> / d_r = kappa m <s^2> / d_r.
+void record_spin_observation(const Scene& scene, const VelocityScale& scale, std::size_t i, const SpinMoments& m,
+                             double mean_c2, SpeciesSeries& s);
+
 /// Appends one observation of `state` to `series` (series.species must have one entry per species); with
 /// `histogram`, also adds the scaled speeds to each species' speed_counts. Returns the totals it summed
 /// (stored units), for checks the caller makes on the same state.

@@ -35,19 +35,20 @@ SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3&
 }
 
 template <class Real>
-SpinMoments spin_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre) noexcept {
+SpinMoments spin_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre, std::size_t first,
+                         std::size_t last) noexcept {
   CompensatedSum s2, s4, c2s2;
-  for (std::size_t k = 0; k < store.size(); ++k) {
+  for (std::size_t k = first; k < last; ++k) {
     const double w2 = norm2(store.spin(k));
     s2.add(w2);
     s4.add(w2 * w2);
     c2s2.add(norm2(store.velocity(k) - centre) * w2);
   }
-  return {store.size(), s2.value(), s4.value(), c2s2.value()};
+  return {last - first, s2.value(), s4.value(), c2s2.value()};
 }
 
-template SpinMoments spin_moments(const SpeciesStore&, const Vec3&) noexcept;
-template SpinMoments spin_moments(const FloatSpeciesStore&, const Vec3&) noexcept;
+template SpinMoments spin_moments(const SpeciesStore&, const Vec3&, std::size_t, std::size_t) noexcept;
+template SpinMoments spin_moments(const FloatSpeciesStore&, const Vec3&, std::size_t, std::size_t) noexcept;
 template SpeciesMoments species_moments(const SpeciesStore&, const Vec3&, std::size_t, std::size_t) noexcept;
 template SpeciesMoments species_moments(const FloatSpeciesStore&, const Vec3&, std::size_t, std::size_t) noexcept;
 

@@ -60,10 +60,17 @@ struct SpinMoments {
   }
 };
 
-/// The spin moments of every particle of a store with spins. (Instantiated for SpeciesStore and
-/// FloatSpeciesStore.)
+/// The spin moments of the particles [first, last) of a store with spins (a part of a system spread over ranks
+/// sums these per chunk, schemes/rank_wave_backend.hpp). (Instantiated for SpeciesStore and FloatSpeciesStore.)
 template <class Real>
-SpinMoments spin_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre) noexcept;
+SpinMoments spin_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre, std::size_t first,
+                         std::size_t last) noexcept;
+
+/// The spin moments of every particle of a store with spins.
+template <class Real>
+SpinMoments spin_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre) noexcept {
+  return spin_moments(store, centre, 0, store.size());
+}
 
 /// The moments of the particles [first, last) of the store (a part of a system spread over ranks sums
 /// these per chunk, schemes/rank_wave_backend.hpp). (Instantiated for SpeciesStore and FloatSpeciesStore.)

@@ -16,24 +16,17 @@ void maxwellian_velocities(BasicSpeciesStore<Real>& store, const RandomStream& r
                                });
 }
 
-namespace {
-
-/// Rough particles start at equipartition, T_rot = T(0): s = (sigma / 2) omega with <s_c^2> = T(0) / (kappa m)
-/// per rotational degree of freedom (I = kappa m sigma^2 / 4), three for spheres, one (z) for disks; normals
-/// from the blocks (initial_spin, i, 0, k).
 template <class Real>
 void maxwellian_spins(BasicSpeciesStore<Real>& store, const RandomStream& rng, std::uint16_t species,
-                      const Scene& scene, double mass) {
+                      std::uint64_t first, const Scene& scene, double mass) {
   store.enable_spins();
   const double width = 1.0 / std::sqrt(scene.collision.reduced_inertia * mass);  // stored units, as for c
   const bool disk = scene.run.dimension == 2;
-  for_each_particle_normal<64>(rng, RngPurpose::initial_spin, species, 0, 0, store.size(),
+  for_each_particle_normal<64>(rng, RngPurpose::initial_spin, species, 0, first, store.size(),
                                [&](std::size_t k, const Vec3& z) {
                                  store.set_spin(k, width * (disk ? Vec3{0.0, 0.0, z.x} : z));
                                });
 }
-
-}  // namespace
 
 template <class Real>
 BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng) {
@@ -49,7 +42,7 @@ BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng
       const Vec3 mean = (1.0 / static_cast<double>(store.size())) * m.sum_c;
       store.for_each_velocity([&](Vec3& c) { c -= mean; });
     }
-    if (rough(scene.collision)) maxwellian_spins(store, rng, static_cast<std::uint16_t>(i), scene, sp.mass);
+    if (rough(scene.collision)) maxwellian_spins(store, rng, static_cast<std::uint16_t>(i), 0, scene, sp.mass);
     state.species.push_back(std::move(store));
   }
   return state;
@@ -59,6 +52,9 @@ template void maxwellian_velocities(SpeciesStore&, const RandomStream&, std::uin
                                     int) noexcept;
 template void maxwellian_velocities(FloatSpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, double,
                                     int) noexcept;
+template void maxwellian_spins(SpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, const Scene&, double);
+template void maxwellian_spins(FloatSpeciesStore&, const RandomStream&, std::uint16_t, std::uint64_t, const Scene&,
+                               double);
 template GasState maxwellian_state(const Scene&, const RandomStream&);
 template FloatGasState maxwellian_state(const Scene&, const RandomStream&);
 

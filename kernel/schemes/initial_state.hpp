@@ -17,6 +17,14 @@ template <class Real>
 void maxwellian_velocities(BasicSpeciesStore<Real>& store, const RandomStream& rng, std::uint16_t species,
                            std::uint64_t first, double width, int dimension) noexcept;
 
+/// The spins of rough particles `first` + k of species i at equipartition, T_rot = T(0), into particle k of
+/// `store` (which it gives spins): s = (sigma / 2) omega with <s_c^2> = T(0) / (kappa m) per rotational degree of
+/// freedom (I = kappa m sigma^2 / 4), three for spheres, one (z) for disks; normals from the blocks
+/// (initial_spin, i, 0, first + k). A system spread over ranks fills its part as for the velocities.
+template <class Real>
+void maxwellian_spins(BasicSpeciesStore<Real>& store, const RandomStream& rng, std::uint16_t species,
+                      std::uint64_t first, const Scene& scene, double mass);
+
 /// Maxwellian velocities at the scene's initial temperature for every species (000 eq. 13), then each
 /// species' mean velocity subtracted so the total momentum vanishes (000 sec. 3); rough particles also get
 /// Maxwellian spins at the same temperature (core/species_store.hpp). The velocity scale is

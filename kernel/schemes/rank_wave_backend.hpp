@@ -2,7 +2,8 @@
 // The collision backend of one system spread over several ranks (`--spread particles`; docs/scaling.md,
 // "One system over several ranks"): for a system larger than one machine's memory. The time stepper
 // (schemes/dsmc.hpp) is the same as in one process; this backend holds the particles, the collision stage
-// and the sums over particles. One species; the effects that act on particles act on this rank's part.
+// and the sums over particles. One species, smooth or rough (the spins of a partner held elsewhere travel with
+// its velocity); the effects that act on particles act on this rank's part.
 //
 // Rank r holds the particles of chunks [C r / R, C (r + 1) / R) of `chunk` consecutive global indices.
 // Every rank draws the whole step's candidate list from the counter-based stream, the same words as the
@@ -35,6 +36,7 @@
 #include "kernel/collide/impact_direction.hpp"
 #include "kernel/collide/inelastic_rule.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
+#include "kernel/collide/rough_rule.hpp"
 #include "kernel/core/philox_stream.hpp"
 #include "kernel/core/ranks.hpp"
 #include "kernel/core/sampling.hpp"
@@ -88,9 +90,11 @@ class RankWaveBackend {
     state.species.emplace_back(hi_ - lo_);
     state.scale.log_u = 0.5 * std::log(scene.initial_temperature);
     maxwellian_velocities(state.species[0], rng, 0, lo_, 1.0 / std::sqrt(mass_), scene.run.dimension);
-    if (!scene.initial_zero_momentum) return state;
-    const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments_about(state.species[0], {}).sum_c;
-    state.species[0].for_each_velocity([&](Vec3& c) { c -= mean; });
+    if (scene.initial_zero_momentum) {
+      const Vec3 mean = (1.0 / static_cast<double>(n_)) * moments_about(state.species[0], {}).sum_c;
+      state.species[0].for_each_velocity([&](Vec3& c) { c -= mean; });
+    }
+    if (rough(scene.collision)) maxwellian_spins(state.species[0], rng, 0, lo_, scene, mass_);
     return state;
   }
 
@@ -140,17 +144,11 @@ class RankWaveBackend {
       return effect.apply(state, step);
     } else {
       static_assert(chunk % Effect::batch == 0, "a chunk is whole batches of the effect's random words");
-      std::vector<double> parts(chunks_, 0.0);
-      for (std::size_t c = first_chunk_; c * chunk < hi_; ++c) {
+      return sum_over_chunks<1>([&](std::size_t from, std::size_t to) {
         CompensatedSum change;
-        effect.apply_range(state.species[0], c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_, lo_, 0, state, step,
-                           change);
-        parts[c] = change.value();
-      }
-      ranks_.sum(parts);
-      CompensatedSum total;
-      for (const double x : parts) total.add(x);
-      return total.value();
+        effect.apply_range(state.species[0], from, to, lo_, 0, state, step, change);
+        return std::array<double, 1>{change.value()};
+      })[0];
     }
   }
 
@@ -159,8 +157,11 @@ class RankWaveBackend {
   GasTotals observe(const Scene& scene, const BasicGasState<Real>& state, ReplicaSeries& series, bool histogram) const {
     const SpeciesMoments origin = moments_about(state.species[0], {});
     const Vec3 flow = (1.0 / static_cast<double>(n_)) * origin.sum_c;
-    const Observed o =
-        record_observation(scene, state.scale, {origin}, {moments_about(state.species[0], flow)}, series);
+    const SpeciesMoments about_flow = moments_about(state.species[0], flow);
+    const Observed o = record_observation(scene, state.scale, {origin}, {about_flow}, series);
+    if (rough(scene.collision))  // not has_spins(): a rank may hold no particle, and the sums are collective
+      record_spin_observation(scene, state.scale, 0, spin_moments_about(state.species[0], flow), about_flow.mean_c2(),
+                              series.species[0]);
     if (histogram) {
       std::vector<double> counts(static_cast<std::size_t>(scene.histogram.shells), 0.0);
       add_speeds(state.species[0], histogram_speed_unit(scene, state.scale, o.theta_mixture), scene.histogram.radius,
@@ -191,27 +192,48 @@ class RankWaveBackend {
     return static_cast<int>(r);
   }
 
-  /// Moments of all particles about `centre`: compensated sums per chunk, then over the chunks in order.
-  template <class Store>
-  SpeciesMoments moments_about(const Store& store, const Vec3& centre) const {
-    constexpr std::size_t fields = 6;
+  /// Values of this rank's chunks (per_chunk(from, to) over its particles [from, to) of a chunk), summed over the
+  /// ranks and then over all chunks in order, compensated: the same bits for any number of ranks.
+  template <std::size_t fields, class PerChunk>
+  std::array<double, fields> sum_over_chunks(const PerChunk& per_chunk) const {
     std::vector<double> parts(fields * chunks_, 0.0);
     for (std::size_t c = first_chunk_; c * chunk < hi_; ++c) {
-      const SpeciesMoments m = species_moments(store, centre, c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_);
-      const double values[fields] = {m.sum_c2, m.sum_c4, m.sum_c6, m.sum_c.x, m.sum_c.y, m.sum_c.z};
-      std::copy(values, values + fields, parts.begin() + static_cast<std::ptrdiff_t>(fields * c));
+      const std::array<double, fields> v = per_chunk(c * chunk - lo_, std::min(hi_, (c + 1) * chunk) - lo_);
+      std::copy(v.begin(), v.end(), parts.begin() + static_cast<std::ptrdiff_t>(fields * c));
     }
     ranks_.sum(parts);
     CompensatedSum total[fields];
     for (std::size_t c = 0; c < chunks_; ++c)
       for (std::size_t f = 0; f < fields; ++f) total[f].add(parts[fields * c + f]);
+    std::array<double, fields> values;
+    for (std::size_t f = 0; f < fields; ++f) values[f] = total[f].value();
+    return values;
+  }
+
+  /// Moments of all particles about `centre`.
+  template <class Store>
+  SpeciesMoments moments_about(const Store& store, const Vec3& centre) const {
+    const std::array<double, 6> t = sum_over_chunks<6>([&](std::size_t from, std::size_t to) {
+      const SpeciesMoments m = species_moments(store, centre, from, to);
+      return std::array<double, 6>{m.sum_c2, m.sum_c4, m.sum_c6, m.sum_c.x, m.sum_c.y, m.sum_c.z};
+    });
     SpeciesMoments m;
     m.particles = n_;
-    m.sum_c2 = total[0].value();
-    m.sum_c4 = total[1].value();
-    m.sum_c6 = total[2].value();
-    m.sum_c = {total[3].value(), total[4].value(), total[5].value()};
+    m.sum_c2 = t[0];
+    m.sum_c4 = t[1];
+    m.sum_c6 = t[2];
+    m.sum_c = {t[3], t[4], t[5]};
     return m;
+  }
+
+  /// Spin moments of all particles (rough particles), the velocities about `centre`.
+  template <class Store>
+  SpinMoments spin_moments_about(const Store& store, const Vec3& centre) const {
+    const std::array<double, 3> t = sum_over_chunks<3>([&](std::size_t from, std::size_t to) {
+      const SpinMoments m = spin_moments(store, centre, from, to);
+      return std::array<double, 3>{m.sum_s2, m.sum_s4, m.sum_c2_s2};
+    });
+    return {n_, t[0], t[1], t[2]};
   }
 
   /// Candidates [first, first + m) of the step drawn (the same words on every rank), given their owners and
@@ -273,6 +295,8 @@ class RankWaveBackend {
                                 double& loss_sum, double (&counts)[2], double& above) {
     const std::vector<std::size_t> start = order_into_waves(step, rng, first, m);
     const auto waves = static_cast<std::uint32_t>(start.size() - 2);
+    constexpr bool spins = rough_kernel<Kernel>;  // a partner's spin travels with its velocity
+    constexpr std::size_t width = spins ? 6 : 3;  // doubles per partner in an exchange
 
     std::vector<double> loss(m, 0.0);  // 2 (energy loss) of each candidate, filled by the owner of k
     const int me = me_;
@@ -286,9 +310,9 @@ class RankWaveBackend {
       for (std::size_t i = from; i < to; ++i) {
         const Queued& c = queue_[i];
         if (doing_k && c.rk == me && c.rl != me)
-          in[static_cast<std::size_t>(c.rl)].resize(in[static_cast<std::size_t>(c.rl)].size() + 3);
+          in[static_cast<std::size_t>(c.rl)].resize(in[static_cast<std::size_t>(c.rl)].size() + width);
         if (!doing_k && c.rl == me && c.rk != me)
-          in[static_cast<std::size_t>(c.rk)].resize(in[static_cast<std::size_t>(c.rk)].size() + 3);
+          in[static_cast<std::size_t>(c.rk)].resize(in[static_cast<std::size_t>(c.rk)].size() + width);
       }
       std::fill(read.begin(), read.end(), 0);
     };
@@ -298,7 +322,10 @@ class RankWaveBackend {
       own.clear();
       for (std::size_t i = from; i < to; ++i) {  // partners held here for candidates done elsewhere
         const Queued& c = queue_[i];
-        if (c.rl == me && c.rk != me) push(out[static_cast<std::size_t>(c.rk)], store.velocity(c.l - lo_));
+        if (c.rl == me && c.rk != me) {
+          push(out[static_cast<std::size_t>(c.rk)], store.velocity(c.l - lo_));
+          if constexpr (spins) push(out[static_cast<std::size_t>(c.rk)], store.spin(c.l - lo_));
+        }
         if (c.rk == me) own.push_back(i);
       }
       expect(from, to, true);
@@ -310,22 +337,34 @@ class RankWaveBackend {
       for (std::size_t o = 0; o < own.size(); ++o) {
         if (o + ahead < own.size()) prefetch(store, queue_[own[o + ahead]]);
         const Queued& c = queue_[own[o]];
-        Vec3 vk = store.velocity(c.k - lo_);
-        Vec3 vl = c.rl == me ? store.velocity(c.l - lo_)
-                             : pull(in[static_cast<std::size_t>(c.rl)], read[static_cast<std::size_t>(c.rl)]);
-        loss[c.j] = collide_candidate(words[o], vk, vl, kernel, pair, omega_max, counts, above);
+        const bool local = c.rl == me;
+        const auto from = static_cast<std::size_t>(c.rl);
+        Vec3 vk = store.velocity(c.k - lo_), sk, sl;
+        Vec3 vl = local ? store.velocity(c.l - lo_) : pull(in[from], read[from]);
+        if constexpr (spins) {
+          sk = store.spin(c.k - lo_);
+          sl = local ? store.spin(c.l - lo_) : pull(in[from], read[from]);
+        }
+        loss[c.j] = collide_candidate(words[o], vk, vl, sk, sl, kernel, pair, omega_max, counts, above);
         store.set_velocity(c.k - lo_, vk);
-        if (c.rl == me)
+        if constexpr (spins) store.set_spin(c.k - lo_, sk);
+        if (local) {
           store.set_velocity(c.l - lo_, vl);
-        else
-          push(out[static_cast<std::size_t>(c.rl)], vl);
+          if constexpr (spins) store.set_spin(c.l - lo_, sl);
+        } else {
+          push(out[from], vl);
+          if constexpr (spins) push(out[from], sl);
+        }
       }
       expect(from, to, false);
       ranks_.exchange(out, in);
       for (std::size_t i = from; i < to; ++i) {
         const Queued& c = queue_[i];
-        if (c.rl == me && c.rk != me)
-          store.set_velocity(c.l - lo_, pull(in[static_cast<std::size_t>(c.rk)], read[static_cast<std::size_t>(c.rk)]));
+        if (c.rl == me && c.rk != me) {
+          const auto from = static_cast<std::size_t>(c.rk);
+          store.set_velocity(c.l - lo_, pull(in[from], read[from]));
+          if constexpr (spins) store.set_spin(c.l - lo_, pull(in[from], read[from]));
+        }
       }
     }
     ranks_.sum(loss);  // one nonzero per candidate: the owner's
@@ -349,11 +388,11 @@ class RankWaveBackend {
     }
   }
 
-  /// A candidate on its two velocities with its block 2s + 1 `w`: schemes/collision_stage.hpp's acceptance
-  /// on the mean over sigma-hat, then sigma-hat given the collision, against the step's majorant.
-  /// Returns 2 (energy loss), 0 without a collision.
+  /// A candidate on its two velocities (and spins, rough particles) with its block 2s + 1 `w`:
+  /// schemes/collision_stage.hpp's acceptance on the mean over sigma-hat, then sigma-hat given the collision,
+  /// against the step's majorant. Returns 2 (energy loss), 0 without a collision.
   template <class Kernel>
-  static double collide_candidate(const RandomBlock& w, Vec3& vk, Vec3& vl, const Kernel& kernel,
+  static double collide_candidate(const RandomBlock& w, Vec3& vk, Vec3& vl, Vec3& sk, Vec3& sl, const Kernel& kernel,
                                   const PairCoefficients& pair, double omega_max, double (&counts)[2], double& above) {
     const Vec3 g = vk - vl;
     const double g2 = norm2(g);
@@ -368,9 +407,13 @@ class RankWaveBackend {
     const ImpactDirection d = impact_direction<dim>(
         g, std::sqrt(g2), impact_variate<dim, Kernel::impact_law>(uniform_open(w[0]), uniform_open(w[1])));
     if (!(d.g_sigma > 0.0)) return 0.0;
-    inelastic_collision(vk, vl, d.sigma, d.g_sigma, pair);
     counts[0] += 1.0;
-    return 2.0 * pair.energy_loss * d.g_sigma * d.g_sigma;
+    if constexpr (rough_kernel<Kernel>) {  // collide/rough_rule.hpp
+      return rough_collision(vk, vl, sk, sl, d.sigma, d.g_sigma, pair);
+    } else {
+      inelastic_collision(vk, vl, d.sigma, d.g_sigma, pair);
+      return 2.0 * pair.energy_loss * d.g_sigma * d.g_sigma;
+    }
   }
 
   /// Hint that a candidate's records held here will be read soon.
@@ -378,6 +421,10 @@ class RankWaveBackend {
   void prefetch(const Store& store, const Queued& c) const noexcept {
     store.prefetch(c.k - lo_);
     if (c.rl == me_) store.prefetch(c.l - lo_);
+    if (store.has_spins()) {
+      store.prefetch_spin(c.k - lo_);
+      if (c.rl == me_) store.prefetch_spin(c.l - lo_);
+    }
   }
 
   static void push(std::vector<double>& b, const Vec3& v) { b.insert(b.end(), {v.x, v.y, v.z}); }

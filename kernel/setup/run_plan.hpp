@@ -101,8 +101,6 @@ template <class Kernel, class Shear, class Thermostat, class Storage, class Back
 constexpr const char* spread_refusal() noexcept {
   if constexpr (!std::is_same_v<Backend, RankWaveStage>)
     return nullptr;
-  else if constexpr (rough_kernel<Kernel>)
-    return "rough particles (collision.tangential_restitution > -1)";
   else if constexpr (!Shear::empty)
     return "a [shear] rate";
   else if constexpr (Thermostat::template has<BgkRelaxation>)
