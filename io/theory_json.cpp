@@ -1,5 +1,7 @@
 #include "io/theory_json.hpp"
 
+#include <stdexcept>
+
 #include "kernel/collide/enskog_chi.hpp"
 #include "kernel/schemes/sample_times.hpp"
 #include "kernel/theory/intruder.hpp"
@@ -298,9 +300,13 @@ void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohman
     // The Gaussian thermostat scales translation and spins alike, so its steady state is the cooling state's
     // in scaled variables (docs/physics.md, "Rough particles").
     if (mixture) {
-      const theory::RoughMixtureState s = theory::rough_mixture_hcs(m);
-      r["theta_hcs"] = species_values(s);
-      r["temperature_ratio_hcs"] = s.temperature_ratio;
+      try {
+        const theory::RoughMixtureState s = theory::rough_mixture_hcs(m);
+        r["theta_hcs"] = species_values(s);
+        r["temperature_ratio_hcs"] = s.temperature_ratio;
+      } catch (const std::runtime_error& e) {  // near beta = -1 (theory/rough.hpp)
+        r["note"] = e.what();
+      }
     } else {
       const double theta = theory::rough_hcs_theta(alpha, beta, kappa, d);
       r["theta_hcs"] = theta;
@@ -315,9 +321,13 @@ void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohman
     const double share = scene.thermostat.rotational_share;
     r["rotational_share"] = share;
     if (mixture) {
-      const theory::RoughMixtureState s = theory::rough_mixture_white_noise(m, share);
-      r["theta_white_noise"] = species_values(s);
-      r["temperature_ratio_white_noise"] = s.temperature_ratio;
+      try {
+        const theory::RoughMixtureState s = theory::rough_mixture_white_noise(m, share);
+        r["theta_white_noise"] = species_values(s);
+        r["temperature_ratio_white_noise"] = s.temperature_ratio;
+      } catch (const std::runtime_error& e) {
+        r["note"] = e.what();
+      }
     } else {
       r["theta_white_noise"] = theory::rough_split_noise_theta(alpha, beta, kappa, share, d);
     }

@@ -134,15 +134,18 @@ TEST(RoughTheory, MixturesHaveTheirLimits) {
     // 1 / b^2, so b^2 theta, the rotation's feedback on the translation, stays finite): no continuity is claimed.
     const RoughMixture unequal = rough_mixture(d, {1.0, 4.0}, {1.0, 2.0}, {1.0, 0.2}, 0.8, -1.0, kappa);
     EXPECT_EQ(rough_mixture_hcs(unequal).temperature_ratio, temperature_ratio_maxwell(unequal.gas));
-    // A genuine mixture (alpha = 0.8, beta = 0): the four temperatures cool at one rate.
-    RoughMixture rough = unequal;
-    rough.beta = 0.0;
-    const RoughMixtureState s = rough_mixture_hcs(rough);
-    const RoughTemperatures t{{s.temperature_ratio, 1.0}, {s.temperature_ratio * s.theta[0], s.theta[1]}};
-    const RoughTemperatures r = rough_mixture_collision_rates(rough, t);
-    const double zeta = r.translation[1];  // T_2 = 1
-    EXPECT_NEAR(r.translation[0] / t.translation[0], zeta, 1e-12 * std::fabs(zeta));
-    EXPECT_NEAR(r.rotation[0] / t.rotation[0], zeta, 1e-12 * std::fabs(zeta));
-    EXPECT_NEAR(r.rotation[1] / t.rotation[1], zeta, 1e-12 * std::fabs(zeta));
+    // A genuine mixture (alpha = 0.8): the four temperatures cool at one rate, also near the smooth limit, where
+    // theta_2 reaches 10^5 (beta = -0.99).
+    for (const double beta : {0.0, 0.9, -0.9, -0.99}) {
+      RoughMixture rough = unequal;
+      rough.beta = beta;
+      const RoughMixtureState s = rough_mixture_hcs(rough);
+      const RoughTemperatures t{{s.temperature_ratio, 1.0}, {s.temperature_ratio * s.theta[0], s.theta[1]}};
+      const RoughTemperatures r = rough_mixture_collision_rates(rough, t);
+      const double zeta = r.translation[1];  // T_2 = 1
+      EXPECT_NEAR(r.translation[0] / t.translation[0], zeta, 1e-12 * std::fabs(zeta)) << beta;
+      EXPECT_NEAR(r.rotation[0] / t.rotation[0], zeta, 1e-12 * std::fabs(zeta)) << beta;
+      EXPECT_NEAR(r.rotation[1] / t.rotation[1], zeta, 1e-12 * std::fabs(zeta)) << beta;
+    }
   }
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace granmc::theory {
 
@@ -35,8 +36,10 @@ double frequency_scale(const RoughMixture& m, const RoughTemperatures& t) noexce
 }
 
 /// Solves residual(z) = 0 for n log-temperatures z, residual = dz/dt over frequency_scale: first by following
-/// the relaxation dz/dtau = residual (the physical approach to the steady state, so it converges to the state
-/// the simulation reaches), then by Newton's method with a finite-difference Jacobian to rounding.
+/// the relaxation dz/dtau = residual (the physical approach to the steady state, so it heads for the state the
+/// simulation reaches) until the residual is small, then by Newton's method with a finite-difference Jacobian,
+/// each step halved until it reduces the residual (near beta = -1 the slowest relaxation rate is of order b^2,
+/// too slow to follow to the end, and theta of order 1 / b^2 is far from the start).
 template <std::size_t n, class Residual>
 std::array<double, n> steady_logs(const Residual& residual, std::array<double, n> z) {
   auto largest = [](const std::array<double, n>& r) {
@@ -45,17 +48,19 @@ std::array<double, n> steady_logs(const Residual& residual, std::array<double, n
     return x;
   };
   std::array<double, n> r = residual(z);
-  for (int k = 0; k < 10000000 && largest(r) > 1e-8; ++k) {
+  for (int k = 0; k < 1000000 && largest(r) > 1e-6; ++k) {
     for (std::size_t a = 0; a < n; ++a) z[a] += 0.05 * r[a];
     r = residual(z);
   }
-  for (int k = 0; k < 50 && largest(r) > 1e-15; ++k) {
+  for (int k = 0; k < 200 && largest(r) > 1e-15; ++k) {
     double jacobian[n][n + 1];
-    for (std::size_t b = 0; b < n; ++b) {
-      std::array<double, n> shifted = z;
-      shifted[b] += 1e-7;
-      const std::array<double, n> rb = residual(shifted);
-      for (std::size_t a = 0; a < n; ++a) jacobian[a][b] = (rb[a] - r[a]) / 1e-7;
+    for (std::size_t b = 0; b < n; ++b) {  // central differences: the slow direction's entries are of order b^2
+      constexpr double h = 1e-5;
+      std::array<double, n> up = z, down = z;
+      up[b] += h;
+      down[b] -= h;
+      const std::array<double, n> ru = residual(up), rd = residual(down);
+      for (std::size_t a = 0; a < n; ++a) jacobian[a][b] = (ru[a] - rd[a]) / (2.0 * h);
     }
     for (std::size_t a = 0; a < n; ++a) jacobian[a][n] = -r[a];
     for (std::size_t c = 0; c < n; ++c) {  // Gaussian elimination with partial pivoting
@@ -73,10 +78,21 @@ std::array<double, n> steady_logs(const Residual& residual, std::array<double, n
       for (std::size_t b = c + 1; b < n; ++b) x -= jacobian[c][b] * jacobian[b][n];
       jacobian[c][n] = x / jacobian[c][c];
     }
-    for (std::size_t a = 0; a < n; ++a) z[a] += jacobian[a][n];
-    r = residual(z);
+    double step = 1.0;
+    for (int halving = 0; halving < 40; ++halving, step *= 0.5) {
+      std::array<double, n> trial = z;
+      for (std::size_t a = 0; a < n; ++a) trial[a] += step * jacobian[a][n];
+      const std::array<double, n> rt = residual(trial);
+      if (largest(rt) < largest(r) || halving == 39) {
+        z = trial;
+        r = rt;
+        break;
+      }
+    }
   }
-  if (!(largest(r) < 1e-12)) throw std::runtime_error("theory of rough mixtures: no steady state found");
+  if (!(largest(r) < 1e-12))
+    throw std::runtime_error("theory of rough mixtures: no steady state found (residual " + std::to_string(largest(r)) +
+                             ")");
   return z;
 }
 

@@ -73,7 +73,10 @@ struct RoughMixtureState {
 };
 
 /// The homogeneous cooling state: the four temperatures decay at one rate. Smooth particles (beta = -1): the
-/// smooth mixture's ratio (theory::temperature_ratio_maxwell) and theta = 0.
+/// smooth mixture's ratio (theory::temperature_ratio_maxwell) and theta = 0. Throws std::runtime_error if it
+/// finds no state: near beta = -1 theta grows as 1 / b^2 and the slowest relaxation rate falls as b^2, and the
+/// solver is checked to beta = -0.99 (theta up to 10^5; tests/test_rough_theory.cpp). Closer to -1 it may fail
+/// (m 1 and 4, sigma 1 and 2, n 1 and 0.2, alpha = 0.8: it finds the state at beta = -0.998, not at -0.999).
 RoughMixtureState rough_mixture_hcs(const RoughMixture& m);
 
 /// The steady state under white noise (effects/white_noise.hpp): every particle's velocity kicked with the same
