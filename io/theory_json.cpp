@@ -1,5 +1,6 @@
 #include "io/theory_json.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "kernel/collide/enskog_chi.hpp"
@@ -134,7 +135,13 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
           {"steady_temperature_maxwellian", theory::white_noise_steady_temperature(lambda, rate, alpha, beta, 0.0, d)}};
       if (lambda == 0.0) w["a2"] = theory::maxwell_white_noise_a2(alpha, d);
       if (lambda == 1.0) add_white_noise_sonine(alpha, d, w);
-      if (lambda > 0.0 && lambda < 1.0) w["a2"] = theory::isotropic_white_noise_a2(alpha, lambda, d);  // VHS
+      if (lambda > 0.0 && lambda < 1.0) {  // VHS: first and second Sonine of the isotropic kernels
+        const theory::SecondSonine second = theory::isotropic_white_noise_second_sonine(alpha, lambda, d);
+        w["a2"] = theory::isotropic_white_noise_a2(alpha, lambda, d);
+        w["a2_model_error"] = std::fabs(second.a2 - w["a2"].get<double>());
+        w["a2_second_sonine"] = second.a2;
+        w["a3_second_sonine"] = second.a3;
+      }
       if (lambda > 0.0)
         w["steady_temperature_first_sonine"] =
             theory::white_noise_steady_temperature(lambda, rate, alpha, beta, w["a2"].get<double>(), d);

@@ -195,6 +195,27 @@ TEST(IsotropicWhiteNoiseA2, HasTheExactLimitsAndTheDerivationsValues) {
   EXPECT_NEAR(isotropic_white_noise_a2(0.9, 0.25, 2), 43264.0 / 23782143.0, 1e-15);
 }
 
+TEST(IsotropicWhiteNoiseSecondSonine, HasTheExactLimitsAndTheDerivationsValues) {
+  // docs/derivations/vhs_white_noise_a2.py, "Second Sonine": lambda = 1 with d = 3 is the hard spheres' linear
+  // second Sonine (their e is uniform); lambda = 0 keeps the exact Maxwell a2; at lambda = 1/2 the script's exact
+  // rationals.
+  for (double alpha = 0.05; alpha < 1.0; alpha += 0.05) {
+    SCOPED_TRACE("alpha = " + std::to_string(alpha));
+    const SecondSonine hard = second_sonine_linear(alpha, SonineState::white_noise, 3);
+    const SecondSonine isotropic = isotropic_white_noise_second_sonine(alpha, 1.0, 3);
+    EXPECT_NEAR(isotropic.a2, hard.a2, 1e-14);
+    EXPECT_NEAR(isotropic.a3, hard.a3, 1e-14);
+    for (const int d : {3, 2})
+      EXPECT_NEAR(isotropic_white_noise_second_sonine(alpha, 0.0, d).a2, maxwell_white_noise_a2(alpha, d), 1e-14);
+  }
+  const SecondSonine disks = isotropic_white_noise_second_sonine(0.5, 0.5, 2);
+  EXPECT_NEAR(disks.a2, 1832651328.0 / 30764861953.0, 1e-15);
+  EXPECT_NEAR(disks.a3, -266617856.0 / 21974901395.0, 1e-15);
+  const SecondSonine spheres = isotropic_white_noise_second_sonine(0.5, 0.5, 3);
+  EXPECT_NEAR(spheres.a2, 61435712.0 / 1209815701.0, 1e-15);
+  EXPECT_NEAR(spheres.a3, -60017664.0 / 6049078505.0, 1e-15);
+}
+
 /// Hard disks: the table of docs/derivations/sonine-hcs.md ("Hard disks"), printed to 8 decimals by
 /// `docs/derivations/sonine_hcs.py --dimension 2`: linear and nonlinear first Sonine, linear and nonlinear
 /// second Sonine (a2, a3).

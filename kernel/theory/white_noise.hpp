@@ -4,6 +4,7 @@
 // the circle, d = 2 (hard disks scatter by their own law instead, collide/impact_direction.hpp). Every
 // pair collides at |S^(d-1)| rate |u|^lambda: 4 pi rate |u|^lambda for spheres, 2 pi for disks.
 // Derivations: docs/physics.md.
+#include "kernel/theory/sonine_hcs.hpp"
 
 namespace granmc::theory {
 
@@ -53,6 +54,14 @@ double maxwell_white_noise_a2(double alpha, int dimension = 3) noexcept;
 /// hard-sphere a2 (white_noise_a2 of theory/sonine.hpp); for VHS disks and spheres in between. Not for hard
 /// disks, which do not scatter e uniformly (white_noise_a2 with d = 2).
 double isotropic_white_noise_a2(double alpha, double lambda, int dimension = 3) noexcept;
+
+/// The second-Sonine steady (a2, a3) of the same kernels, F = phi (1 + a2 S2 + a3 S3), linear in (a2, a3) as
+/// second_sonine_linear does it for hard cores (docs/derivations/vhs-white-noise-a2.md, "Second Sonine"): the pair
+/// averages of the fourth and sixth moments' changes, weighted by |u|^lambda, evaluated term by term. lambda = 1,
+/// d = 3 is the hard spheres' second_sonine_linear(alpha, SonineState::white_noise); lambda = 0 keeps the exact a2
+/// of maxwell_white_noise_a2. |a2 - isotropic_white_noise_a2| is the first Sonine's truncation error (0.00126 for VHS
+/// disks, lambda = 1/2, alpha = 1/2).
+SecondSonine isotropic_white_noise_second_sonine(double alpha, double lambda, int dimension = 3);
 
 /// <|u|^p> over pairs of independent Maxwellian unit-mass particles at temperature T in d dimensions:
 /// (4 T)^{p/2} Gamma((d + p)/2) / Gamma(d/2).
