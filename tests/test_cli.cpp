@@ -142,7 +142,7 @@ TEST_F(Cli, HardDisksHaveTheirTheoryAndRun) {
 
 /// White noise on hard cores: `granmc theory` gives the first- and second-Sonine a2 (and a3) of the heated
 /// state (docs/derivations/sonine-hcs.md, "White noise"), the same for the hard disks of 000's form and of
-/// 001's kernel form, with the first Sonine's model error their distance.
+/// 001's kernel form, with the first Sonine's model error their distance; and so for VHS.
 TEST_F(Cli, WhiteNoiseHardCoresHaveTheirSecondSonine) {
   const std::string scenes = std::string(GRANMC_SOURCE_DIR) + "/drivers/scenes/white_noise/";
   const Outcome stepped = granmc("theory " + scenes + "disks.toml");
@@ -157,6 +157,14 @@ TEST_F(Cli, WhiteNoiseHardCoresHaveTheirSecondSonine) {
   EXPECT_EQ(a["a2_model_error"].get<double>(), std::fabs(second - first));
   EXPECT_NEAR(second, 0.03452, 5e-6);  // alpha = 1/2, d = 2: docs/derivations/sonine-hcs.md's table
   EXPECT_NEAR(a["a3_second_sonine"].get<double>(), -0.00550, 5e-6);
+  // VHS spheres (e uniform, lambda = 1/2): the isotropic kernels' second Sonine
+  // (docs/derivations/vhs-white-noise-a2.md)
+  const Outcome vhs = granmc("theory " + scenes + "event_vhs.toml");
+  ASSERT_EQ(vhs.status, 0) << vhs.stderr_text;
+  const nlohmann::json v = nlohmann::json::parse(vhs.stdout_text)["white_noise"];
+  EXPECT_NEAR(v["a2"].get<double>(), 64.0 / 1235.0, 1e-15);
+  EXPECT_NEAR(v["a2_second_sonine"].get<double>(), 61435712.0 / 1209815701.0, 1e-15);
+  EXPECT_EQ(v["a2_model_error"].get<double>(), std::fabs(v["a2_second_sonine"].get<double>() - v["a2"].get<double>()));
 }
 
 TEST_F(Cli, RoughParticlesHaveTheirTheoryAndRun) {
