@@ -3,6 +3,7 @@
 //  - the contact velocity G: G.sigma -> -alpha G.sigma and G_t -> -beta G_t; momentum conserved; the returned
 //    translational loss is the direct difference; alpha = beta = 1 conserves translational plus rotational energy;
 //    disks keep their velocities in the plane and their spins along z;
+//  - over Maxwellian pairs of a mixture, its mean energy changes are the Maxwellian rates of theory/rough.hpp;
 //  - beta = -1 is the smooth rule bit for bit, in the rule and in a whole collision stage;
 //  - the stage's result does not depend on its batch size with spins either.
 #include <cmath>
