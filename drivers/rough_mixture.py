@@ -41,6 +41,18 @@ def theory(granmc, stem):
     return json.loads(out)["rough"]
 
 
+def row_scenes(base, dimension, beta):
+    """The scene of a row (dimension, alpha = ALPHA, beta) and its light species alone at the total density."""
+    scene = copy.deepcopy(base)
+    scene["run"]["dimension"] = dimension
+    scene["collision"]["restitution"] = ALPHA
+    scene["collision"]["tangential_restitution"] = beta
+    one = copy.deepcopy(scene)
+    one["species"] = [dict(scene["species"][0], density=1.0,
+                           particles=sum(s["particles"] for s in scene["species"]))]
+    return scene, one
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--granmc", default="build/bin/granmc")
@@ -54,15 +66,9 @@ def main():
     rows = []
     for dimension in (3, 2):
         for beta in BETAS:
-            scene = copy.deepcopy(base)
-            scene["run"]["dimension"] = dimension
-            scene["collision"]["restitution"] = ALPHA
-            scene["collision"]["tangential_restitution"] = beta
+            scene, one = row_scenes(base, dimension, beta)
             if beta < 0.0:
-                scene["run"]["t_end"] = LONG * base["run"]["t_end"]
-            one = copy.deepcopy(scene)  # the light species alone, at the total density
-            one["species"] = [dict(scene["species"][0], density=1.0,
-                                   particles=sum(s["particles"] for s in scene["species"]))]
+                scene["run"]["t_end"] = one["run"]["t_end"] = LONG * base["run"]["t_end"]
             stem = os.path.join(args.out, "points", f"d{dimension}_b{beta}")
             mixture, single = (run_point(args.granmc, s, stem + suffix, args.threads)
                                for s, suffix in ((scene, ""), (one, "_one")))
@@ -72,14 +78,9 @@ def main():
     heated = []
     for dimension in (3, 2):
         for beta in BETAS:
-            scene = copy.deepcopy(base)
-            scene["run"]["dimension"] = dimension
-            scene["collision"]["restitution"] = ALPHA
-            scene["collision"]["tangential_restitution"] = beta
-            scene["thermostat"] = {"kind": "white-noise", "beta": 1.0}  # theta settles within t = 10 at any beta
-            one = copy.deepcopy(scene)
-            one["species"] = [dict(scene["species"][0], density=1.0,
-                                   particles=sum(s["particles"] for s in scene["species"]))]
+            scene, one = row_scenes(base, dimension, beta)
+            for s in (scene, one):  # theta settles within t = 10 at any beta
+                s["thermostat"] = {"kind": "white-noise", "beta": 1.0}
             names = [s["name"] for s in scene["species"]]
             row = {"d": dimension, "beta": beta}
             for label, s, species in (("mixture", scene, names), ("single", one, names[:1])):
