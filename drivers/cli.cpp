@@ -118,7 +118,8 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
   if (what.threads_per_replica > 1)
     std::printf(
         "threads      %d replica(s) at a time, each on %d threads: the collision stage in concurrent rounds, the "
-        "same bits as on one but not faster where measured (docs/scaling.md)\n",
+        "same bits as on one; faster for replicas of millions of particles, slower for small ones "
+        "(docs/scaling.md)\n",
         what.replicas_in_flight, what.threads_per_replica);
   else if (threads > what.replicas_in_flight)
     std::printf("threads      %d replica(s) at a time, one thread each; %d thread(s) idle%s\n", what.replicas_in_flight,
@@ -127,7 +128,8 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
                                     : " (this scheme runs a replica on one thread)");
   else
     std::printf("threads      %d replicas at a time, one thread each\n", what.replicas_in_flight);
-  // Threads inside a replica do not shorten it on the machines measured (docs/scaling.md): not counted.
+  // Threads inside a replica shorten it by a factor that depends on its size and the machine (docs/scaling.md):
+  // not counted.
   const double seconds = what.candidates / (what.candidates_per_second * what.replicas_in_flight);
   std::printf("work         %s%.3g candidate pairs, about %.0f s on %d threads at %.2g candidates/s per thread\n",
               what.candidates_upper_bound ? "at most " : "", what.candidates, seconds, threads,

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Wall time of `granmc run` on one thread and on two, for the tables of docs/scaling.md ("Threads inside one
-replica"): one replica of 10^7 with its two threads inside it (--threads-per-replica 2), and two replicas of
-10^7 and of 10^6 with one thread each.
+replica"): one replica of 10^7, 10^6 and 10^5 particles with its two threads inside it (--threads-per-replica
+2), and two replicas of 10^7 and of 10^6 with one thread each.
 
 Usage: /usr/bin/python3 perf/thread_scaling.py [--granmc build/bin/granmc] [--runs 3] [--work DIR]
-       (`make bench-threads`; about 1 minute per run on this 2-core host)
+       (`make bench-threads`; about 2 minutes per run on this 2-core host)
 
 The figure is the summary's wall_seconds (granmc's own wall time, set-up included). The one- and two-thread
 runs of a scene alternate, so that they share the state of the (shared, noisy) machine; the script prints
@@ -24,6 +24,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = os.path.join(ROOT, "drivers", "scenes", "scaling")
 CASES = [  # scene, the two-thread run's extra arguments, what it measures
     ("one_replica_1e7.toml", ["--threads-per-replica", "2"], "one replica of 10^7, 2 threads inside it"),
+    ("one_replica_1e6.toml", ["--threads-per-replica", "2"], "one replica of 10^6, 2 threads inside it"),
+    ("one_replica_1e5.toml", ["--threads-per-replica", "2"], "one replica of 10^5, 2 threads inside it"),
     ("two_replicas_1e7.toml", [], "two replicas of 10^7, one thread each"),
     ("two_replicas_1e6.toml", [], "two replicas of 10^6, one thread each"),
 ]

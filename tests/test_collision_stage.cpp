@@ -3,6 +3,9 @@
 // screen of a batch's candidates in SIMD leaves out only candidates that the full test would reject, and
 // the impact directions it computes ahead for those that share no particle are the ones the full test
 // would compute: the same bits as the stage without it.
+#include <omp.h>
+
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -13,6 +16,8 @@
 
 #include "kernel/collide/hard_sphere.hpp"
 #include "kernel/collide/variable_hard_spheres.hpp"
+#include "kernel/core/pinned_thread.hpp"
+#include "kernel/core/spin_barrier.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/concurrent_rounds.hpp"
 #include "kernel/schemes/initial_state.hpp"
@@ -323,6 +328,49 @@ TEST(ConcurrentRounds, TheFilterKnowsEveryParticleOfAChunk) {
   filter.clear();
   for (std::size_t k : chunk) EXPECT_FALSE(filter.may_contain(store.particle(k).address()));
 }
+
+TEST(ConcurrentRounds, TheBarrierShowsEveryThreadWhatTheOthersWroteBeforeIt) {
+  // The rounds' barrier (core/spin_barrier.hpp), 2, 3 and 8 threads (more than the cores, so it yields): in each
+  // of 2000 rounds every thread writes its slot, passes the barrier, and reads every other slot of that round.
+  for (const int threads : {2, 3, 8}) {
+    std::optional<SpinBarrier> barrier;
+    std::vector<int> slots;
+    int wrong = 0;
+#pragma omp parallel num_threads(threads) reduction(+ : wrong)
+    {
+      const auto t = static_cast<std::size_t>(omp_get_thread_num());
+#pragma omp single
+      {
+        barrier.emplace(omp_get_num_threads());
+        slots.assign(static_cast<std::size_t>(omp_get_num_threads()), -1);
+      }
+      for (int round = 0; round < 2000; ++round) {
+        slots[t] = round;
+        barrier->arrive_and_wait();
+        for (const int seen : slots) wrong += seen == round ? 0 : 1;
+        barrier->arrive_and_wait();  // nobody writes the next round's slot before all have read this one's
+      }
+    }
+    EXPECT_EQ(wrong, 0) << threads << " threads";
+  }
+}
+
+#if defined(__linux__)
+TEST(ConcurrentRounds, APinnedThreadRunsOnOneCpuAndGetsItsCpusBack) {
+  cpu_set_t before;
+  ASSERT_EQ(pthread_getaffinity_np(pthread_self(), sizeof(before), &before), 0);
+  if (CPU_COUNT(&before) < 2 || omp_get_proc_bind() != omp_proc_bind_false) GTEST_SKIP() << "one CPU, or bound";
+  {
+    const PinnedThread pinned(1);
+    cpu_set_t during;
+    ASSERT_EQ(pthread_getaffinity_np(pthread_self(), sizeof(during), &during), 0);
+    EXPECT_EQ(CPU_COUNT(&during), 1);
+  }
+  cpu_set_t after;
+  ASSERT_EQ(pthread_getaffinity_np(pthread_self(), sizeof(after), &after), 0);
+  EXPECT_TRUE(CPU_EQUAL(&before, &after));
+}
+#endif
 
 TEST(ConcurrentRounds, KeepTheBitsWhenAMajorantIsRaised) {
   // From the low majorant of Gas: nearly every round raises it and runs again in order.

@@ -112,11 +112,11 @@ namespace detail {
 /// candidate looks them up. The arithmetic and its order are the same in both forms, so the results are the
 /// same bits.
 ///
-/// `in_round`: the stage is one thread's chunk of a concurrent round (schemes/concurrent_rounds.hpp). It draws
-/// its chunk and claims the chunk's particles first, then holds back (defers) the candidates that meet a
-/// particle of an earlier chunk, runs the others, and keeps, instead of summing them, each collision's
+/// `in_round`: the stage is a follower's chunk of a concurrent round (schemes/concurrent_rounds.hpp). It draws
+/// the round's candidates before its chunk and notes their particles, then holds back (defers) the candidates
+/// of its chunk that meet one of them, runs the others, and keeps, instead of summing them, each collision's
 /// terms, the velocities it overwrote and whether it raised a majorant; the round then replays the deferred
-/// candidates, adds the terms in candidate order, or undoes the round.
+/// candidates, adds the terms in candidate order, or undoes the followers' chunks.
 template <class Kernel, class Shift, bool one_pair, std::uint64_t batch, class Real, bool in_round = false>
 class BatchedStage {
   static_assert(batch > 0);
@@ -232,91 +232,75 @@ class BatchedStage {
   /// Adds a collision's terms to its pair's tally.
   void add_outcome(const Outcome& o) noexcept { add(tally_[one_pair ? 0 : o.q], o); }
 
-  // A concurrent round's chunk (in_round only), in the order the round calls them.
+  // A follower's chunk of a concurrent round (in_round only), in the order the round calls them.
 
-  /// Starts the chunk of candidates first .. end - 1 from the pair choice `deck` and the majorants.
-  void begin_chunk(std::uint64_t first, std::uint64_t end, const PairDeck& deck, std::span<const double> majorants) {
+  /// Starts a round from the pair choice `deck` and the majorants at its first candidate.
+  void begin_round(const PairDeck& deck, std::span<const double> majorants) noexcept {
     static_assert(in_round);
-    chunk_first_ = first, chunk_end_ = end;
     set_deck(deck);
     std::copy(majorants.begin(), majorants.end(), majorant_);
     raised_ = false;
-    outcomes_.reset(end - first), undo_.reset(2 * (end - first)), spin_undo_.reset(rough ? 2 * (end - first) : 0);
-    replayed_from_ = undo_replayed_from_ = 0;
-    chunk_.resize((end - first + batch - 1) / batch);
-    deferred_.assign(chunk_.size(), 0);
+    earlier_.clear();
   }
 
-  /// Draws the chunk and lists the keys of its particles (AddressFilter::key). It reads no record: the chunk's
-  /// collisions prefetch theirs a batch ahead, as the one-thread stage does (a pass that fetched the records
-  /// first left them out of the first-level cache again by the time they collided, docs/scaling.md).
-  void draw_chunk() {
-    keys_.clear();
-    for (std::uint64_t i = 0, s0 = chunk_first_; i < chunk_.size(); ++i, s0 += batch) {
-      Drawn& d = chunk_[i];
-      draw(d, s0, std::min(batch, chunk_end_ - s0));
-      for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - s0); ++b) {
-        keys_.push_back(AddressFilter::key(d.pk[b].address()));
-        keys_.push_back(AddressFilter::key(d.pl[b].address()));
+  /// Draws the candidates first .. end - 1 that the round runs before this chunk, on other threads, and puts
+  /// their particles' keys in this thread's filter (core/address_filter.hpp). It reads no record; it moves the
+  /// pair choice on to the chunk's first candidate.
+  void note_earlier(std::uint64_t first, std::uint64_t end) noexcept {
+    for (std::uint64_t s0 = first; s0 < end; s0 += batch) {
+      const std::uint64_t m = std::min(batch, end - s0);
+      draw<true>(drawn_[0], s0, m);
+      for (std::uint64_t b = 0; b < m; ++b) {
+        earlier_.insert(AddressFilter::key(drawn_[0].pk[b].address()));
+        earlier_.insert(AddressFilter::key(drawn_[0].pl[b].address()));
       }
     }
   }
-  /// The keys of the particles the chunk names (draw_chunk).
-  [[nodiscard]] std::span<const std::uint32_t> chunk_keys() const noexcept { return keys_; }
 
-  /// Defers the candidates of the chunk that may meet a particle of an earlier chunk of the round (`earlier`,
-  /// their chunk_keys, copied into a filter in this thread's cache), and those that meet a particle of a
-  /// deferred candidate before them.
-  void defer(std::span<const std::span<const std::uint32_t>> earlier) {
+  /// The chunk's candidates first .. end - 1 in order, drawn a batch ahead as on one thread, each batch's
+  /// candidates deferred as it is drawn when they may meet a particle of the earlier candidates (note_earlier)
+  /// or meet one of a deferred candidate before them; the others run, and keep their terms, the velocities they
+  /// overwrote and whether they raised a majorant.
+  void run_chunk(std::uint64_t first, std::uint64_t end) {
+    outcomes_.reset(end - first), undo_.reset(2 * (end - first)), spin_undo_.reset(rough ? 2 * (end - first) : 0);
+    deferred_.clear();
     held_back_.clear();
-    if (earlier.empty()) return;  // the round's first chunk follows every candidate before it
-    earlier_.clear();
-    for (const auto keys : earlier)
-      for (const std::uint32_t k : keys) earlier_.insert(k);
     const auto met = [&](const void* a) {
       return earlier_.may_contain(a) || (!held_back_.empty() && held_back_.contains(a));
     };
-    for (std::size_t i = 0; i < chunk_.size(); ++i) {
-      const Drawn& d = chunk_[i];
-      for (std::uint64_t b = 0; b < std::min(batch, chunk_end_ - d.first); ++b) {
-        const auto& pk = d.pk[b];
-        const auto& pl = d.pl[b];
-        if (met(pk.address()) || met(pl.address())) {
-          deferred_[i] |= std::uint64_t{1} << b;
-          held_back_.insert(pk.address());
-          held_back_.insert(pl.address());
+    run_batches(first, end, [&](std::uint64_t i, std::uint64_t s0, std::uint64_t m) -> const Drawn& {
+      Drawn& d = drawn_[i & 1u];
+      draw(d, s0, m);
+      skip_[i & 1u] = 0;
+      for (std::uint64_t b = 0; b < m; ++b) {
+        if (met(d.pk[b].address()) || met(d.pl[b].address())) {
+          skip_[i & 1u] |= std::uint64_t{1} << b;
+          held_back_.insert(d.pk[b].address());
+          held_back_.insert(d.pl[b].address());
+          deferred_.push_back(
+              {s0 + b, d.pk[b], d.pl[b], d.qs[b], d.accept[b], d.dir1[b], d.dir2[b], d.sx[b], d.sy[b], d.sz[b]});
         }
       }
-    }
-  }
-
-  /// The chunk's candidates that are not deferred, in order.
-  void run_chunk() noexcept {
-    run_batches(chunk_first_, chunk_end_,
-                [this](std::uint64_t i, std::uint64_t, std::uint64_t) -> const Drawn& { return chunk_[i]; });
+      return d;
+    });
     replayed_from_ = outcomes_.size();
     undo_replayed_from_ = undo_.size();
   }
 
   /// The deferred candidates, in order, each in full (after every earlier chunk of the round has run).
   void replay_deferred() noexcept {
-    for (std::size_t i = 0; i < chunk_.size(); ++i)
-      for (std::uint64_t held = deferred_[i]; held != 0; held &= held - 1) {
-        const auto b = static_cast<std::uint64_t>(std::countr_zero(held));
-        const Drawn& d = chunk_[i];
-        // n as the batch would have had it: the same bits as the SIMD impact_variates
-        const Vec3 n = directions_for_all ? Vec3{d.sx[b], d.sy[b], d.sz[b]}
-                                          : impact_variate<dimension, Kernel::impact_law>(d.dir1[b], d.dir2[b]);
-        nx_[0] = n.x, ny_[0] = n.y, nz_[0] = n.z;
-        test_and_apply(d, b, nx_, ny_, nz_, 0);
-      }
+    Drawn& d = drawn_[0];  // lane 0 holds the deferred candidate
+    for (const DeferredCandidate& c : deferred_) {
+      d.first = c.candidate, d.pk[0] = c.pk, d.pl[0] = c.pl, d.qs[0] = c.q, d.accept[0] = c.accept;
+      // n as the batch would have had it: the same bits as the SIMD impact_variates
+      const Vec3 n =
+          directions_for_all ? Vec3{c.sx, c.sy, c.sz} : impact_variate<dimension, Kernel::impact_law>(c.dir1, c.dir2);
+      nx_[0] = n.x, ny_[0] = n.y, nz_[0] = n.z;
+      test_and_apply(d, 0, nx_, ny_, nz_, 0);
+    }
   }
 
-  [[nodiscard]] std::uint64_t deferred_count() const noexcept {
-    std::uint64_t n = 0;
-    for (std::uint64_t held : deferred_) n += static_cast<std::uint64_t>(std::popcount(held));
-    return n;
-  }
+  [[nodiscard]] std::uint64_t deferred_count() const noexcept { return deferred_.size(); }
   /// Whether a candidate of the chunk raised a majorant (then the round runs again in order).
   [[nodiscard]] bool raised() const noexcept { return raised_; }
   /// The collisions' terms: those of run_chunk, then those of replay_deferred, each in candidate order.
@@ -358,7 +342,7 @@ class BatchedStage {
       const std::uint64_t m_next = s0 + m < end ? std::min(batch, end - s0 - m) : 0;
       const Drawn& d = *current;
       const Drawn& next = m_next > 0 ? batch_at(i + 1, s0 + m, m_next) : d;
-      const std::uint64_t skip = in_round ? deferred_[i] : 0;
+      const std::uint64_t skip = in_round ? skip_[i & 1u] : 0;
       if constexpr (screened && Shift::active) {
         for (std::uint64_t full_test = screen(d, m, next, m_next, skip) & ~skip; full_test != 0;
              full_test &= full_test - 1) {
@@ -396,16 +380,29 @@ class BatchedStage {
   }
 
   /// Draws candidates s0 .. s0 + m - 1 into d. They depend on the counters and the pair counts only, never
-  /// on a velocity, so a batch can be drawn before the one in front of it has collided.
+  /// on a velocity, so a batch can be drawn before the one in front of it has collided. `particles_only`: their
+  /// pairs and particles alone (a follower's note of the earlier candidates of its round), which for one pair
+  /// needs the blocks 2s only.
+  template <bool particles_only = false>
   void draw(Drawn& d, std::uint64_t s0, std::uint64_t m) noexcept {
     // Blocks 2s (lane b) and 2s + 1 (lane batch + b) of the batch's candidates s = s0 + b, all at once,
     // each kind in consecutive lanes so that its words convert in SIMD (past the end of the step in the
     // last batch, unused).
-    for (std::uint64_t b = 0; b < batch; ++b) {
-      index_[b] = 2 * (s0 + b);
-      index_[batch + b] = 2 * (s0 + b) + 1;
-    }
-    const RandomBlocks<2 * batch> blocks = rng_.blocks(RngPurpose::collision_pair, 0, steps_, index_);
+    constexpr std::size_t kinds = particles_only && one_pair ? 1 : 2;
+    const RandomBlocks<kinds* batch> blocks = [&] {
+      if constexpr (kinds == 2) {
+        for (std::uint64_t b = 0; b < batch; ++b) {
+          index_[b] = 2 * (s0 + b);
+          index_[batch + b] = 2 * (s0 + b) + 1;
+        }
+        return rng_.blocks(RngPurpose::collision_pair, 0, steps_, index_);
+      } else {
+        std::array<std::uint64_t, batch> steps, index;
+        steps.fill(steps_[0]);
+        for (std::uint64_t b = 0; b < batch; ++b) index[b] = 2 * (s0 + b);
+        return rng_.blocks(RngPurpose::collision_pair, 0, steps, index);
+      }
+    }();
     const auto& w = blocks.word;
     auto pick = [&](std::size_t word) { return std::span<const std::uint32_t, batch>(w[word].data(), batch); };
     const auto draw = [](std::uint64_t b) { return batch + b; };
@@ -436,6 +433,7 @@ class BatchedStage {
       d.pk[b] = store_k_[q]->particle(ks_[b]);
       d.pl[b] = store_l_[q]->particle(l);
     }
+    if constexpr (particles_only) return;
     for (std::uint64_t b = 0; b < batch; ++b) {
       d.dir1[b] = uniform_open(w[0][draw(b)]);
       d.dir2[b] = uniform_open(w[1][draw(b)]);
@@ -701,16 +699,19 @@ class BatchedStage {
   Lanes nx_, ny_, nz_;  // the directions n of the candidates that passed the screen
   Lanes gx_, gy_, gz_, g_square_, sigma_x_, sigma_y_, sigma_z_,
       g_sigma_;  // and, for those, g and |g|^2, then sigma-hat and g.sigma
-  // In a round: the chunk, its drawn batches, the deferred candidates (a bit per lane), the particles they
-  // hold back, and what the chunk did.
-  std::uint64_t chunk_first_ = 0, chunk_end_ = 0;
-  std::vector<Drawn> chunk_;
-  std::vector<std::uint64_t> deferred_;
+  // In a round: the deferred candidates, the particles they hold back, and what the chunk did.
+  std::array<std::uint64_t, 2> skip_{};  // the deferred candidates of drawn_[0] and drawn_[1], a bit per lane
+  struct DeferredCandidate {             // a deferred candidate's draws
+    std::uint64_t candidate;
+    typename Store::Particle pk, pl;
+    std::uint8_t q;
+    double accept, dir1, dir2, sx, sy, sz;
+  };
+  std::vector<DeferredCandidate> deferred_;
   // The round's sets, absent from a stage outside a round (the filter alone is 64 KB, and a stage is made per step).
   struct NotInRound {};
   template <class T>
   using RoundOnly = std::conditional_t<in_round, T, NotInRound>;
-  [[no_unique_address]] RoundOnly<std::vector<std::uint32_t>> keys_;
   [[no_unique_address]] RoundOnly<AddressFilter> earlier_;
   [[no_unique_address]] RoundOnly<AddressSet> held_back_;
   BoundedList<Outcome> outcomes_;

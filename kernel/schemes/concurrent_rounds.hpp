@@ -3,35 +3,40 @@
 // (schemes/collision_stage.hpp): concurrent rounds. docs/scaling.md gives the argument in full; in short:
 //
 // The candidates of a step, their pairs, particles and uniforms, depend on the counters only, never on a
-// velocity. A round hands thread t the chunk of candidates [R + t B, R + (t + 1) B):
-//  1. each thread draws its chunk and lists its particles' keys (core/address_filter.hpp); it reads no record;
-//  2. after a barrier, each thread puts the keys of the earlier chunks of the round into a filter of its own,
-//     defers the candidates of its chunk that may name a particle of an earlier chunk, or that name one of a
-//     deferred candidate before them, and runs the others in order, records prefetched a batch ahead as on
-//     one thread;
-//  3. one thread replays the deferred candidates in candidate order, then adds the collisions' terms to the
-//     tallies in candidate order.
+// velocity. A round of T threads splits its candidates into a leader's chunk (thread 0) and T - 1 followers'
+// chunks after it, in candidate order:
+//  1. the leader runs its chunk as the one-thread stage does, on the step's own stage and tallies;
+//  2. at the same time follower t draws the round's candidates before its chunk (it reads no record) and puts
+//     their particles in a filter of its own, then runs its chunk: it defers each candidate that may name a
+//     particle of the filter, or names one of a deferred candidate before it, and runs the others in order,
+//     records prefetched a batch ahead as on one thread, keeping their terms and the velocities they overwrote;
+//  3. one thread replays the followers' deferred candidates in candidate order, then adds the followers'
+//     collisions' terms to the tallies in candidate order.
 // A candidate that runs in step 2 names no particle that an earlier candidate of the round, in another
 // chunk, names: every particle sees the updates of the serial order, in that order. The filter may answer
 // "maybe" for a particle no earlier chunk names; that defers a candidate needlessly and changes nothing else.
-// What the chunks share is the majorant, which a collision raises when omega exceeds it (000 sec. 3): all
-// chunks test against its value at the round's start, which is the serial value unless a candidate raises
-// it. If one does, the round's velocities (and the spins of rough particles, beside the records under the
-// same index) are restored from the overwritten values kept in step 2 and 3, and the round runs again in
-// order on one thread. Raises are rare (a few per run); a candidate of chunk t is deferred with probability
-// about 4 B t / N for a shared particle (0.08 % at N = 10^7, B = 2048, t = 1) and about 0.2 % for the filter's
-// "maybe". On the 2-core host measured, two threads in rounds are about as fast as one at N = 10^7
-// (docs/scaling.md), so they run only when asked for (RunOptions::threads_per_replica).
+// What the chunks share is the majorant, which a collision raises when omega exceeds it (000 sec. 3): the
+// followers test against its value at the round's start, which is the serial value unless a candidate before
+// theirs raises it. If the leader or a follower raises it, the followers' velocities (and the spins of rough
+// particles, beside the records under the same index) are restored from the overwritten values kept in steps
+// 2 and 3, and their chunks run again in order after the leader's. Raises are rare (a few per run). The
+// leader's chunk grows or shrinks a batch per round so that it takes as long as the slowest follower's (whose
+// note of the earlier candidates it does not pay); the split changes which candidates are deferred, never a
+// result.
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "kernel/collide/enskog_shear_shift.hpp"
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/philox_stream.hpp"
+#include "kernel/core/pinned_thread.hpp"
+#include "kernel/core/spin_barrier.hpp"
 #include "kernel/observe/gas_series.hpp"
 #include "kernel/schemes/collision_stage.hpp"
 #include "kernel/schemes/gas_state.hpp"
@@ -42,6 +47,7 @@ namespace granmc {
 struct ConcurrentRounds {
   int threads = 1;
   CollisionRoundCounts counts;
+  std::uint64_t leader_chunk = 0;  // candidates of the leader's chunk, balanced over the rounds (0: not yet set)
 };
 
 /// Candidates per thread and round for N particles: about N / 4096 (a multiple of the batch), at least
@@ -60,7 +66,7 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
                        std::span<CollisionTally> tallies, const Kernel& kernel, const Shift& shift,
                        ConcurrentRounds& rounds) {
   using Serial = BatchedStage<Kernel, Shift, one_pair, batch, Real>;
-  using Round = BatchedStage<Kernel, Shift, one_pair, batch, Real, true>;
+  using Follower = BatchedStage<Kernel, Shift, one_pair, batch, Real, true>;
   Serial serial(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
   std::uint64_t particles = 0;
   for (const auto& store : state.species) particles += store.size();
@@ -72,60 +78,71 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
     serial.finish(omega_max, tallies);
     return;
   }
-  // The pair choice at each chunk's first candidate (a mixture's pairs are drawn in order).
-  const std::uint64_t chunks = (total + chunk - 1) / chunk;
-  std::vector<typename Serial::PairDeck> decks(one_pair ? 1 : chunks);
-  if constexpr (!one_pair) {
-    const typename Serial::PairDeck start = serial.deck();
-    for (std::uint64_t c = 0; c < chunks; ++c) {
-      decks[c] = serial.deck();
-      for (std::uint64_t s0 = c * chunk; s0 < std::min(total, (c + 1) * chunk); s0 += batch)
-        serial.advance_pairs(s0, std::min(batch, total - s0));
-    }
-    serial.set_deck(start);
-  }
-  const auto deck = [&](std::uint64_t c) -> const typename Serial::PairDeck& { return decks[one_pair ? 0 : c]; };
-  std::vector<Round*> stages(threads, nullptr);
-  std::vector<std::span<const std::uint32_t>> chunk_keys(threads);
+  if (rounds.leader_chunk == 0) rounds.leader_chunk = chunk;
+  const std::uint64_t least_lead = chunk / 4, most_lead = 8 * chunk;
+  // The next round's start, shared: its first candidate, and the pair choice and majorants there.
+  std::uint64_t round_first = 0;
+  typename Serial::PairDeck round_deck{};
+  std::vector<double> round_majorants(pairs.size());
+  std::vector<Follower*> followers(threads, nullptr);
+  std::vector<double> seconds(threads, 0.0);
+  std::optional<SpinBarrier> barrier;
 #pragma omp parallel num_threads(static_cast <int>(threads))
   {
     const auto team = static_cast<std::uint64_t>(omp_get_num_threads());
     const auto t = static_cast<std::uint64_t>(omp_get_thread_num());
-    Round stage(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
-    stages[t] = &stage;
-    for (std::uint64_t r = 0; r < (chunks + team - 1) / team; ++r) {
-      const std::uint64_t c = r * team + t;
-      const std::uint64_t first = std::min(total, c * chunk), end = std::min(total, first + chunk);
-      stage.begin_chunk(first, end, deck(std::min(c, chunks - 1)), serial.majorants());
-      stage.draw_chunk();
-      chunk_keys[t] = stage.chunk_keys();
-#pragma omp barrier
-      stage.defer(std::span<const std::span<const std::uint32_t>>(chunk_keys).first(t));
-      stage.run_chunk();
-#pragma omp barrier
+    const PinnedThread pinned(static_cast<int>(t));
 #pragma omp single
-      {
-        bool raised = false;
-        for (std::uint64_t u = 0; u < team; ++u) {
-          raised = raised || stages[u]->raised();
-          rounds.counts.deferred += stages[u]->deferred_count();
+    barrier.emplace(static_cast<int>(team));
+    std::optional<Follower> stage;
+    if (t > 0) stage.emplace(state, pairs, omega_max, candidates, rng, tallies, kernel, shift);
+    followers[t] = stage ? &*stage : nullptr;
+    // Called by one thread: the round from candidate `from`, or, when fewer candidates are left than a round
+    // holds, the rest in order.
+    const auto start_round = [&](std::uint64_t from) {
+      round_first = from;
+      if (total - from < rounds.leader_chunk + (team - 1) * chunk) {
+        serial.run_range(from, total);
+        round_first = total;
+      }
+      round_deck = serial.deck();
+      std::ranges::copy(serial.majorants(), round_majorants.begin());
+    };
+    if (t == 0) start_round(0);
+    barrier->arrive_and_wait();
+    while (round_first < total) {
+      const std::uint64_t first = round_first, lead_end = first + rounds.leader_chunk;
+      const auto clock = std::chrono::steady_clock::now();
+      if (t == 0) {
+        serial.run_range(first, lead_end);
+      } else {
+        const std::uint64_t own = lead_end + (t - 1) * chunk;
+        stage->begin_round(round_deck, round_majorants);
+        stage->note_earlier(first, own);
+        stage->run_chunk(own, own + chunk);
+      }
+      seconds[t] = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+      barrier->arrive_and_wait();
+      if (t == 0) {
+        const std::uint64_t round_end = lead_end + (team - 1) * chunk;
+        bool raised = !std::ranges::equal(serial.majorants(), round_majorants);
+        for (std::uint64_t u = 1; u < team; ++u) {
+          raised = raised || followers[u]->raised();
+          rounds.counts.deferred += followers[u]->deferred_count();
         }
         for (std::uint64_t u = 1; u < team && !raised; ++u) {
-          stages[u]->replay_deferred();
-          raised = stages[u]->raised();
+          followers[u]->replay_deferred();
+          raised = followers[u]->raised();
         }
-        const std::uint64_t round_first = std::min(total, r * team * chunk);
-        const std::uint64_t round_end = std::min(total, (r + 1) * team * chunk);
-        if (raised) {  // undo the round and run it in order
-          for (std::uint64_t u = team; u-- > 0;) stages[u]->undo_replayed();
-          for (std::uint64_t u = 0; u < team; ++u) stages[u]->undo_chunk();
-          serial.set_deck(deck(r * team));
-          serial.run_range(round_first, round_end);
+        if (raised) {  // undo the followers' chunks and run them in order after the leader's
+          for (std::uint64_t u = team; u-- > 1;) followers[u]->undo_replayed();
+          for (std::uint64_t u = 1; u < team; ++u) followers[u]->undo_chunk();
+          serial.run_range(lead_end, round_end);
           ++rounds.counts.in_order;
         } else {  // the collisions' terms in candidate order: per chunk, a merge of the two ordered runs
-          for (std::uint64_t u = 0; u < team; ++u) {
-            const auto ran = stages[u]->chunk_outcomes();
-            const auto replayed = stages[u]->replayed_outcomes();
+          for (std::uint64_t u = 1; u < team; ++u) {
+            const auto ran = followers[u]->chunk_outcomes();
+            const auto replayed = followers[u]->replayed_outcomes();
             std::size_t a = 0, b = 0;
             while (a < ran.size() || b < replayed.size()) {
               const bool from_ran =
@@ -133,9 +150,17 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
               serial.add_outcome(from_ran ? ran[a++] : replayed[b++]);
             }
           }
+          serial.set_deck(followers[team - 1]->deck());
         }
         ++rounds.counts.rounds;
+        double slowest = 0.0;
+        for (std::uint64_t u = 1; u < team; ++u) slowest = std::max(slowest, seconds[u]);
+        const std::uint64_t lead = rounds.leader_chunk;
+        rounds.leader_chunk = slowest > seconds[0] ? std::min(most_lead, lead + batch)
+                                                   : std::max(least_lead, lead - std::min(lead, batch));
+        start_round(round_end);
       }
+      barrier->arrive_and_wait();
     }
   }
   serial.finish(omega_max, tallies);

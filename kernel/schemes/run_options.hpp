@@ -21,8 +21,9 @@ class RunInterrupted : public std::runtime_error {
 struct RunOptions {
   int threads = 0;  // OpenMP threads for the replicas; 0: the OpenMP default
   // At most this many of them inside one replica, where the scheme can use them (the time-stepped scheme's
-  // concurrent collision rounds, schemes/concurrent_rounds.hpp): the same bits, but on the machines measured
-  // so far not faster than one thread per replica (docs/scaling.md), hence 1 unless asked for.
+  // concurrent collision rounds, schemes/concurrent_rounds.hpp): the same bits, faster than one thread for
+  // replicas of 10^6 and 10^7 particles on the host measured and slower for one of 10^5 (docs/scaling.md),
+  // hence 1 unless asked for.
   int threads_per_replica = 1;
   std::function<void()> on_sample;  // called after each observation of each replica, from any thread
   // This process runs the replicas r with r % replica_stride == replica_offset (MPI ranks,

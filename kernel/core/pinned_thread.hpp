@@ -1,0 +1,53 @@
+#pragma once
+// A thread pinned to one CPU for a scope: the threads of one replica's concurrent collision rounds
+// (schemes/concurrent_rounds.hpp), which wait on each other twice per round. Left to the scheduler, the thread
+// that a step's parallel region woke often ran on the CPU of the thread that woke it, and the two took turns on
+// one CPU for much of the step: one replica of 10^5 particles took 2 to 6 times longer on two threads in some
+// runs than in others, and never so with the threads bound (docs/scaling.md). Pinned to the t-th CPU of the set
+// it may run on, thread t of a team runs beside the others; the thread's own set comes back at the end of the
+// scope. Linux only; elsewhere, or when OpenMP binds its threads already (OMP_PROC_BIND), it does nothing.
+#include <omp.h>
+
+#if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
+#endif
+
+namespace granmc {
+
+class PinnedThread {
+ public:
+  /// Pins the calling thread to the `index`-th CPU (modulo their number) of the CPUs it may run on.
+  explicit PinnedThread(int index) noexcept {
+#if defined(__linux__)
+    if (omp_get_proc_bind() != omp_proc_bind_false) return;
+    if (pthread_getaffinity_np(pthread_self(), sizeof(saved_), &saved_) != 0) return;
+    const int cpus = CPU_COUNT(&saved_);
+    if (cpus < 2) return;
+    for (int cpu = 0, seen = 0; cpu < CPU_SETSIZE; ++cpu) {
+      if (!CPU_ISSET(cpu, &saved_)) continue;
+      if (seen++ != index % cpus) continue;
+      cpu_set_t one;
+      CPU_ZERO(&one);
+      CPU_SET(cpu, &one);
+      pinned_ = pthread_setaffinity_np(pthread_self(), sizeof(one), &one) == 0;
+      return;
+    }
+#endif
+  }
+  ~PinnedThread() {
+#if defined(__linux__)
+    if (pinned_) pthread_setaffinity_np(pthread_self(), sizeof(saved_), &saved_);
+#endif
+  }
+  PinnedThread(const PinnedThread&) = delete;
+  PinnedThread& operator=(const PinnedThread&) = delete;
+
+ private:
+#if defined(__linux__)
+  cpu_set_t saved_{};
+#endif
+  bool pinned_ = false;
+};
+
+}  // namespace granmc
