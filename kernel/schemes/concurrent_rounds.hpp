@@ -10,7 +10,7 @@
 //     their particles in a filter of its own, then runs its chunk: it defers each candidate that may name a
 //     particle of the filter, or names one of a deferred candidate before it, and runs the others in order,
 //     records prefetched a batch ahead as on one thread, keeping their terms and the velocities they overwrote;
-//  3. one thread replays the followers' deferred candidates in candidate order, then adds the followers'
+//  3. the leader replays the followers' deferred candidates in candidate order, then adds the followers'
 //     collisions' terms to the tallies in candidate order.
 // A candidate that runs in step 2 names no particle that an earlier candidate of the round, in another
 // chunk, names: every particle sees the updates of the serial order, in that order. The filter may answer
@@ -50,10 +50,8 @@ struct ConcurrentRounds {
   std::uint64_t leader_chunk = 0;  // candidates of the leader's chunk, balanced over the rounds (0: not yet set)
 };
 
-/// Candidates per thread and round for N particles: about N / 4096 (a multiple of the batch), at least
-/// 512 and at most 2048 (a chunk's draws stay within the core's cache, and a larger chunk defers more
-/// candidates: at N = 10^7, chunks of 8192 ran as fast as 2048 and deferred 6 times as many, 32768 were
-/// slower, docs/scaling.md).
+/// Candidates of a follower's chunk for N particles: about N / 4096 (a multiple of the batch), at least 512 and
+/// at most 2048 (a larger chunk defers more candidates; docs/scaling.md).
 inline std::uint64_t round_chunk(std::uint64_t particles) noexcept {
   return std::clamp<std::uint64_t>(particles / 4096 / 64 * 64, 512, 2048);
 }
