@@ -216,17 +216,6 @@ class BatchedStage {
   }
   void set_deck(const PairDeck& d) noexcept { std::copy(d.begin(), d.end(), std::begin(cumulative_)); }
 
-  /// Moves the pair choice past candidates s0 .. s0 + m - 1 (m <= batch), drawing their pairs only.
-  void advance_pairs(std::uint64_t s0, std::uint64_t m) noexcept {
-    if constexpr (!one_pair) {
-      std::array<std::uint64_t, batch> steps, index;
-      steps.fill(steps_[0]);
-      for (std::uint64_t b = 0; b < batch; ++b) index[b] = 2 * (s0 + b) + 1;
-      const RandomBlocks<batch> blocks = rng_.blocks(RngPurpose::collision_pair, 0, steps, index);
-      for (std::uint64_t b = 0; b < m; ++b) choose_pair(blocks.word[3][b], s0 + b);
-    }
-  }
-
   /// The running majorants, per pair.
   [[nodiscard]] std::span<const double> majorants() const noexcept { return {majorant_, n_pairs_}; }
   /// Adds a collision's terms to its pair's tally.
