@@ -279,7 +279,13 @@ class BatchedStage {
   /// The deferred candidates, in order, each in full (after every earlier chunk of the round has run).
   void replay_deferred() noexcept {
     Drawn& d = drawn_[0];  // lane 0 holds the deferred candidate
-    for (const DeferredCandidate& c : deferred_) {
+    // Their records prefetched a few candidates ahead: one at a time, each would wait a memory latency.
+    constexpr std::size_t ahead = 16;
+    for (std::size_t a = 0; a < std::min(ahead, deferred_.size()); ++a)
+      deferred_[a].pk.prefetch(), deferred_[a].pl.prefetch();
+    for (std::size_t i = 0; i < deferred_.size(); ++i) {
+      const DeferredCandidate& c = deferred_[i];
+      if (i + ahead < deferred_.size()) deferred_[i + ahead].pk.prefetch(), deferred_[i + ahead].pl.prefetch();
       d.first = c.candidate, d.pk[0] = c.pk, d.pl[0] = c.pl, d.qs[0] = c.q, d.accept[0] = c.accept;
       // n as the batch would have had it: the same bits as the SIMD impact_variates
       const Vec3 n =
