@@ -28,16 +28,13 @@ import copy
 import json
 import math
 import os
-import sys
 import tomllib
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from results import open_results  # noqa: E402
-from scene_run import run_point  # noqa: E402
+from granmc import LAMBDA_P, mean_ci, open_results, run_point
+from granmc.plotting import pyplot, save
 
-LAMBDA_P = 3.2
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "accuracy")
 
 
@@ -60,11 +57,6 @@ def late_deviations(stem, scene, n_particle_law):
     if n_particle_law:
         exact = exact * (1.0 - 1.0 / n)
     return (temperature[:, late] / exact - 1.0).mean(axis=1)
-
-
-def mean_ci(per_replica):
-    """Replica mean and its CI half-width (001 eq. 31, lambda_p = 3.2)."""
-    return float(per_replica.mean()), float(LAMBDA_P * per_replica.std(ddof=1) / math.sqrt(len(per_replica)))
 
 
 def early_slope_deviations(stem):
@@ -289,9 +281,7 @@ def write_table(study, path):
 
 
 def plot(study, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.2))
     ax = axes[0]
     n = np.array([r["knob"] for r in study["particles"]])
@@ -315,8 +305,7 @@ def plot(study, path):
     ax.set_xscale("log"), ax.set_yscale("log"), ax.set_xlabel("wall seconds"), ax.set_ylabel("error vs (1 - 1/n) T")
     ax.legend(fontsize="small")
     fig.suptitle("Work-precision: 001 Example 3 (Maxwell pseudomolecules, white noise)", fontsize="small")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save(fig, path)
 
 
 if __name__ == "__main__":

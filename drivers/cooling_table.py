@@ -11,14 +11,7 @@ and the cooling-rate model error of docs/physics.md at that time. Prints Markdow
 import argparse
 import sys
 
-import numpy as np
-
-LAMBDA_P = 3.2
-
-
-def mean_ci(values):
-    values = np.asarray(values, dtype=float)
-    return values.mean(), LAMBDA_P * np.sqrt(values.var() / values.size)
+from granmc import mean_ci
 
 
 def main():
@@ -27,7 +20,7 @@ def main():
     p.add_argument("--relaxed-after", type=float, default=15.0, help="collisions per particle before averaging a2")
     args = p.parse_args()
     try:
-        from results import open_results
+        from granmc import open_results
     except ImportError:
         sys.exit("cooling_table.py: needs h5py (Debian python3-h5py); run it with /usr/bin/python3")
     with open_results(args.result) as f:

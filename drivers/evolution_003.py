@@ -13,7 +13,7 @@ as 1 / sqrt(T): the state slides towards the HCS (a* -> 0) while eta* = -P_xy / 
 Navier-Stokes value.
 
 The scene (by default drivers/scenes/003_viscosity/base.toml) is run once per restitution coefficient
-(cached by scene text, drivers/scene_run.py) with --t-end, --particles and --replicas replacing its own.
+(cached by scene text, python/granmc/scenes.py) with --t-end, --particles and --replicas replacing its own.
 Writes OUT/figure.png (eta*(t) with its CI and the first-Sonine Navier-Stokes value of `granmc theory`;
 a*(t); T(t)/T(0)) and OUT/table.md: per restitution, T, a* and eta* averaged over consecutive windows of
 the run, and checks computed from them: T rises and a* falls from each window to the next, and eta* is
@@ -25,13 +25,12 @@ import json
 import math
 import os
 import subprocess
-import sys
 import tomllib
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_run import run_point  # noqa: E402
+from granmc import run_point  # cached by scene text
+from granmc.plotting import pyplot, save
 
 WINDOWS = 5  # consecutive windows of the run in the table
 
@@ -137,9 +136,7 @@ def yes(flag):
 
 
 def plot(rows, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, (top, middle, bottom) = plt.subplots(3, 1, figsize=(6.4, 8.4), sharex=True)
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -157,8 +154,7 @@ def plot(rows, path):
     bottom.set_ylabel("T(t) / T(0)")
     bottom.set_xlabel("t")
     fig.suptitle("003: modified shear flow, evolution")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save(fig, path)
 
 
 if __name__ == "__main__":

@@ -52,40 +52,13 @@ import tomllib
 
 import numpy as np
 
-from zero_shear import LAMBDA_P, fit_intercept, window_mean_shear_rate
+from granmc import LAMBDA_P
+from granmc.scenes import toml_text, toml_value
+from granmc.plotting import pyplot, save
+from zero_shear import fit_intercept, window_mean_shear_rate
 
 
 # ---- scenes ---------------------------------------------------------------------------------------------
-
-def toml_value(v):
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, (int, float)):
-        return repr(v)
-    if isinstance(v, str):
-        return json.dumps(v)
-    if isinstance(v, list):
-        return "[" + ", ".join(toml_value(x) for x in v) + "]"
-    if isinstance(v, dict):
-        return "{ " + ", ".join(f"{k} = {toml_value(x)}" for k, x in v.items()) + " }"
-    raise TypeError(f"cannot write {v!r} to TOML")
-
-
-def toml_text(scene):
-    """A scene dict (tables, an array of [[species]] tables, plain values) as TOML text."""
-    lines = []
-    for table, body in scene.items():
-        if table == "species":
-            for sp in body:
-                lines.append("[[species]]")
-                lines += [f"{k} = {toml_value(v)}" for k, v in sp.items()]
-                lines.append("")
-        else:
-            lines.append(f"[{table}]")
-            lines += [f"{k} = {toml_value(v)}" for k, v in body.items()]
-            lines.append("")
-    return "\n".join(lines)
-
 
 def point_scene(bases, curve, x_name, x):
     scene = copy.deepcopy(bases[curve.get("base", "")])
@@ -534,9 +507,7 @@ def fmt(v):
 
 
 def plot(fig, results, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     styles = {"equilibrium, R = 1": ":", "Maxwellian": ":", "first Sonine": "-", "second Sonine": "--", "exact": "-",
               "Gaussian bath, eq. 22": "--", "first Sonine, HSS": "-", "first Sonine, HCS": "--", "Grad": "-"}
@@ -573,8 +544,7 @@ def plot(fig, results, path):
         ax.set_yscale("log")
     ax.set_title(f"{fig['paper']}: {fig['caption']}", fontsize="small")
     ax.legend(fontsize="x-small")
-    f.tight_layout()
-    f.savefig(path, dpi=120)
+    save(f, path)
 
 
 if __name__ == "__main__":

@@ -12,11 +12,9 @@ T/T_B with its CI against the exact 0.6 (002 eq. 22), and the wall time to reach
 import argparse
 import copy
 import os
-import sys
 import tomllib
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_run import run_point  # noqa: E402
+from granmc import run_point  # cached by scene text
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "accuracy")
 

@@ -23,6 +23,8 @@ import tomllib
 import numpy as np
 from scipy import integrate, stats
 
+from granmc.plotting import pyplot, save
+
 
 def flux_eq20(v1, a, rho):
     return rho * (math.exp(-a * v1 * v1) / math.sqrt(math.pi * a) + v1 * math.erf(math.sqrt(a) * v1))
@@ -63,9 +65,7 @@ def main():
     scene = tomllib.loads(text)
     a0, rho = scene["intruder"]["bath_a"], scene["intruder"]["bath_density"]
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
     lines = ["# 002 Figs. 1-2: the Gaussian bath as the intruder sees it (`make fig-002-1`)", "",
              f"Scene {args.scene}: rho = {rho}; Fig. 2 at a = {a0}, {args.samples} draws per v1, seed "
@@ -110,8 +110,7 @@ def main():
     ax2.set_ylabel("g_+(v; v1)")
     ax2.set_title(f"002 Fig. 2: g_+ (histograms) against eq. 14 (dashed), a = {a0:g}", fontsize=9)
     ax2.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "figure.png"), dpi=120)
+    save(fig, os.path.join(args.out, "figure.png"))
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -17,6 +17,8 @@ import sys
 
 import numpy as np
 
+from granmc.plotting import pyplot, save
+
 
 def fail(message):
     print(f"plot_cooling: {message}", file=sys.stderr)
@@ -28,7 +30,7 @@ def text(value):
 
 
 def read(path):
-    from results import FormatError, open_results
+    from granmc import FormatError, open_results
 
     try:
         f = open_results(path)
@@ -68,10 +70,7 @@ def read(path):
 
 
 def plot(run, out):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     t = run["times"]
     positive = t[t > 0]
@@ -139,8 +138,7 @@ def plot(run, out):
     directory = os.path.dirname(os.path.abspath(out))
     if not os.path.isdir(directory):
         fail(f"output directory '{directory}' does not exist")
-    fig.savefig(out, dpi=150)
-    plt.close(fig)
+    save(fig, out)
 
 
 def main(argv):

@@ -18,7 +18,8 @@ import sys
 
 import numpy as np
 
-LAMBDA_P = 3.2
+from granmc import mean_ci
+from granmc.plotting import pyplot, save
 
 
 def shell_maxwell(lam, edges):
@@ -38,7 +39,7 @@ def main():
     p.add_argument("--theory-json", help="output of `granmc theory` for the scene")
     p.add_argument("--table", help="write a Markdown table of Delta here")
     args = p.parse_args()
-    from results import open_results
+    from granmc import open_results
     with open_results(args.result) as f:
         edges = f["speed_shell_edges"][()]
         groups = sorted(f["species"].values(), key=lambda g: int(g.attrs["index"]))
@@ -71,11 +72,10 @@ def main():
         lams.append(lam)
         cs.append(c)
     deltas = np.array(deltas)
-    mean = deltas.mean(axis=0)
-    ci = LAMBDA_P * np.sqrt(deltas.var(axis=0) / deltas.shape[0])
+    mean, ci = mean_ci(deltas)
     lam = float(np.mean(lams))
     c = float(np.mean(cs))
-    c_ci = LAMBDA_P * float(np.std(cs)) / math.sqrt(len(cs))
+    _, c_ci = mean_ci(cs)
 
     lam_theory = None
     if args.theory_json:
@@ -87,9 +87,7 @@ def main():
     sonine = lambda l: 0.5 * l * l * v ** 4 - 2.5 * l * v ** 2 + 15.0 / 8.0   # 000 eq. (20)
     s3 = lambda z: -z ** 3 / 6.0 + 7.0 * z ** 2 / 4.0 - 35.0 * z / 8.0 + 35.0 / 16.0  # Sonine S3, z = lambda v*^2
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     shown = counts.sum(axis=0) > 100  # shells with enough particles to say anything
     ax.errorbar(centres[shown], mean[shown], yerr=ci[shown], fmt="o", ms=3, capsize=2,
@@ -108,8 +106,7 @@ def main():
     ax.set_title(f"000 Fig. 2: {scene}", fontsize="small")
     ax.axhline(0.0, color="0.6", linewidth=0.5)
     ax.legend(fontsize="small")
-    fig.tight_layout()
-    fig.savefig(args.out, dpi=120)
+    save(fig, args.out)
     if args.table:
         with open(args.table, "w") as fh:
             fh.write(f"# 000 Fig. 2: Delta_{i + 1}(v*), lambda = {lam:.4f}, c = {c:.4f} +- {c_ci:.4f}\n\n")

@@ -17,7 +17,8 @@ import os
 
 import numpy as np
 
-LAMBDA_P = 3.2
+from granmc import mean_ci
+from granmc.plotting import pyplot, save
 
 
 def tail_exponent(counts, left, right):
@@ -42,15 +43,13 @@ def main():
     p.add_argument("out")
     p.add_argument("--fit", nargs=2, type=float, default=[10.0, 100.0], help="|v| window of the tail fit")
     args = p.parse_args()
-    from results import open_results
+    from granmc import open_results
     with open(os.path.join(args.out, "figure.json")) as f:
         fig = json.load(f)
     lo, hi = args.fit
     rows = []
     reference = 0.05
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig_plot, (ax, ax_log) = plt.subplots(1, 2, figsize=(11, 4.5))
     for n, pt in enumerate(fig["curves"][0]["points"]):
         alpha = pt["x"]
@@ -69,7 +68,7 @@ def main():
         inside = (edges[:-1] >= lo) & (edges[1:] <= hi)
         e = np.array([tail_exponent(counts[r, inside], edges[:-1][inside], edges[1:][inside])
                       for r in range(counts.shape[0])])
-        b_mean, b_ci = e.mean(), LAMBDA_P * e.std() / math.sqrt(len(e))
+        b_mean, b_ci = mean_ci(e)
         rows.append((alpha, b_mean, b_ci, len(e)))
         # The tail panel merges the shells into logarithmic bins from 1 to the histogram's radius.
         bins = np.exp(np.linspace(0.0, math.log(edges[-1]), 31))
@@ -93,8 +92,7 @@ def main():
     ax_log.set_ylabel("f(v)")
     ax_log.set_title(f"tails; exponent fitted on {lo:g} <= |v| <= {hi:g}", fontsize="small")
     ax_log.legend(fontsize="x-small")
-    fig_plot.tight_layout()
-    fig_plot.savefig(os.path.join(args.out, "tails.png"), dpi=120)
+    save(fig_plot, os.path.join(args.out, "tails.png"))
     with open(os.path.join(args.out, "tails.md"), "w") as f:
         f.write(f"# 002 Fig. 5: tail exponent b of f(v) ~ |v|^-b, fit on {lo:g} <= |v| <= {hi:g}\n\n")
         f.write("| alpha | b | CI | replicas |\n|---|---|---|---|\n")

@@ -14,7 +14,8 @@ import sys
 
 import numpy as np
 
-from results import open_results
+from granmc import mean_ci, open_results
+from granmc.plotting import pyplot, save
 
 
 def main():
@@ -31,9 +32,8 @@ def main():
     w = omega[:, first:]
     m2 = (w ** 2).mean(axis=1)
     kurt = (w ** 4).mean(axis=1) / m2 ** 2
-    lam = 3.2
-    k_mean, k_ci = kurt.mean(), lam * kurt.std(ddof=1) / math.sqrt(len(kurt))
-    var = m2.mean()
+    k_mean, k_ci = mean_ci(kurt)
+    var, var_ci = mean_ci(m2)
 
     centres = 0.5 * (edges[1:] + edges[:-1])
     density = 0.5 * mean  # |omega| density -> omega density (symmetric)
@@ -52,13 +52,11 @@ def main():
         f.write("# 002 Fig. 8: the needle's angular velocity, M/m = 0.1, alpha = 0.1\n\n")
         f.write("| quantity | granmc | CI | Gaussian |\n|---|---|---|---|\n")
         f.write(f"| kurtosis <w^4>/<w^2>^2 | {k_mean:.4f} | {k_ci:.4f} | 3 |\n")
-        f.write(f"| <w^2> | {var:.5f} | {lam * m2.std(ddof=1) / math.sqrt(len(m2)):.5f} | - |\n")
+        f.write(f"| <w^2> | {var:.5f} | {var_ci:.5f} | - |\n")
         f.write(f"| best-fit Gaussian variance | {s2_fit:.5f} | - | - |\n")
         f.write(f"\nreplicas: {omega.shape[0]}, samples per replica in the average: {w.shape[1]}\n")
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     reach = edges[1:][ok].max()  # the populated shells only
     x = np.linspace(0, reach, 400)
@@ -77,8 +75,7 @@ def main():
     axes[0].legend(fontsize="small")
     fig.suptitle(f"002 Fig. 8: needle M/m = 0.1, alpha = 0.1; kurtosis {k_mean:.3f} +- {k_ci:.3f} (Gaussian 3)",
                  fontsize="small")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "figure.png"), dpi=120)
+    save(fig, os.path.join(out, "figure.png"))
     print(f"wrote {out}/figure.png, {out}/table.md")
 
 

@@ -24,17 +24,14 @@ and writes OUT/table.md, OUT/figure.png and OUT/relaxation.json:
 import argparse
 import copy
 import json
-import math
 import os
 import subprocess
-import sys
 import tomllib
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from results import open_results  # noqa: E402
-from scene_run import run_point  # noqa: E402  (cached by scene text)
+from granmc import mean_ci, open_results, run_point
+from granmc.plotting import pyplot, save
 
 PAPER_TABLES = {  # 001 Tables 1 and 2: n -> (E_max, ||V||_inf)
     "1": {64: (0.895e-1, 0.672e-2), 256: (0.235e-1, 0.516e-2), 1024: (0.571e-2, 0.211e-2),
@@ -80,8 +77,7 @@ def main():
             momentum = h["/momentum/replicas"][()]                # [replicas, samples, 3]
         replicas = temperature.shape[0]
         uncentred = np.array(summary["temperature_uncentred"]["mean"])
-        mean = temperature.mean(axis=0)
-        ci = 3.2 * temperature.std(axis=0, ddof=1) / math.sqrt(replicas)
+        mean, ci = mean_ci(temperature)
         bulk = np.linalg.norm(momentum.mean(axis=0) / n, axis=1)  # |ensemble mean of V|, unit mass
         row = {"n": n, "replicas": replicas, "times": times.tolist(), "mean": mean.tolist(), "ci": ci.tolist(),
                "bulk_inf": float(bulk.max()), "wall_seconds": summary["wall_seconds"],
@@ -158,9 +154,7 @@ def fmt(v):
 
 
 def plot(rows, args, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     shown = [r for r in rows if args.plot_particles is None or r["n"] in args.plot_particles]
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
@@ -184,8 +178,7 @@ def plot(rows, args, path):
     ax.set_ylabel("T")
     ax.set_title(f"001 sec. 5.2: {os.path.basename(args.scene)}")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save(fig, path)
 
 
 if __name__ == "__main__":

@@ -16,24 +16,17 @@ at dt -> 0 per replica (2 x(dt/2) - x(dt)), as drivers/rough_split_noise.py does
 import argparse
 import copy
 import json
-import math
 import os
 import subprocess
-import sys
 import tomllib
 
-import numpy as np
-
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from results import open_results  # noqa: E402
-from scene_run import run_point  # noqa: E402  (cached by scene text)
+from granmc import mean_ci, open_results, run_point
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "rough_mixture")
 ALPHA = 0.8
 BETAS = (-0.5, 0.0, 0.5, 1.0)
 LONG = 4  # t_end factor at beta = -0.5: the weakly coupled spins heat up over tens of time units
 DT = 0.005  # the white-noise runs' coarser step
-LAMBDA_P = 3.2  # 001 eq. 31, as kernel/analysis/replica_statistics.hpp
 
 
 def theory(granmc, stem):
@@ -90,7 +83,7 @@ def main():
                     stem = os.path.join(args.out, "points", f"noise_d{dimension}_b{beta}_{label}_dt{step}")
                     run_point(args.granmc, s, stem, args.threads)
                     per_dt.append(last_half_ratios(stem + ".h5", species))
-                row[label] = {k: mean_ci(2.0 * per_dt[1][k] - per_dt[0][k]) for k in per_dt[0]}
+                row[label] = {k: mean_and_ci(2.0 * per_dt[1][k] - per_dt[0][k]) for k in per_dt[0]}
                 row["theory_" + label] = theory(args.granmc, stem)
             heated.append(row)
             print(f"  white noise, d = {dimension}, beta = {beta}: done", flush=True)
@@ -111,9 +104,10 @@ def last_half_ratios(path, species):
     return out
 
 
-def mean_ci(values):
-    """The replica mean and its confidence half-width lambda_p sqrt(Var / R), Var with 1/R (kernel/analysis)."""
-    return {"mean": float(np.mean(values)), "ci": LAMBDA_P * float(np.std(values, ddof=0)) / math.sqrt(len(values))}
+def mean_and_ci(values):
+    """The replica mean and its confidence half-width, as a row of the table."""
+    mean, ci = mean_ci(values)
+    return {"mean": mean, "ci": ci}
 
 
 def cell(measured, maxwellian):

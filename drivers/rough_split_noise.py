@@ -22,20 +22,16 @@ import argparse
 import copy
 import csv
 import json
-import math
 import os
 import subprocess
-import sys
 import tomllib
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from results import open_results  # noqa: E402
-from scene_run import run_point  # noqa: E402  (cached by scene text)
+from granmc import LAMBDA_P, mean_ci, open_results, run_point
+from granmc.plotting import pyplot, save
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "rough_disks")
-LAMBDA_P = 3.2  # 001 eq. 31, as kernel/analysis/replica_statistics.hpp
 LONG = 4  # t_end factor of the rows with epsilon >= 0.8
 
 
@@ -53,10 +49,6 @@ def stationary_theta(path):
         t_tr = species["temperature/replicas"][()]
     first = t_tr.shape[1] // 2
     return (t_rot[:, first:] / t_tr[:, first:]).mean(axis=1)
-
-
-def mean_ci(values):
-    return float(values.mean()), LAMBDA_P * float(values.std(ddof=0)) / math.sqrt(len(values))
 
 
 def main():
@@ -121,10 +113,7 @@ def write_table(rows, path):
 def plot(rows, path):
     """(a) theta against epsilon, log axis; (b) granmc and the Maxwellian approximation relative to the published
     value, with granmc's CI."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, (ax, dev) = plt.subplots(2, 1, figsize=(6.4, 7.2), sharex=True, gridspec_kw={"height_ratios": [3, 2]})
     pairs = sorted({(r["alpha"], r["beta"]) for r in rows}, reverse=True)
@@ -150,8 +139,7 @@ def plot(rows, path):
     dev.axhline(0.0, color="k", linewidth=0.6)
     dev.set_xlabel("share of the noise power on rotation, epsilon")
     dev.set_ylabel("theta / published - 1 (%)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=130)
+    save(fig, path)
 
 
 if __name__ == "__main__":

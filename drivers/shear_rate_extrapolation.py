@@ -23,8 +23,9 @@ import tempfile
 
 import numpy as np
 
-from results import open_results
-from zero_shear import LAMBDA_P, fit_intercept, window_mean_shear_rate
+from granmc import LAMBDA_P, open_results
+from granmc.plotting import pyplot, save
+from zero_shear import fit_intercept, window_mean_shear_rate
 
 
 def points_of(sweep_dir):
@@ -71,9 +72,7 @@ def main():
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, axes = plt.subplots(1, len(args.sweeps), figsize=(5.5 * len(args.sweeps), 4.5), squeeze=False)
     lines = [f"# eta* against the shear rate, extrapolated to a* -> 0 (`make {args.target}`)", "",
@@ -125,8 +124,7 @@ def main():
         ax.set_ylabel("eta*")
         ax.set_title(f"{stem}: eta* vs a*^2; lines: fits, stars: first Sonine", fontsize=9)
         ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "shear_rate.png"), dpi=120)
+    save(fig, os.path.join(args.out, "shear_rate.png"))
     lines[4:4] = [f"Made by granmc {', '.join(sorted(builds))} (`granmc --version`); another build reruns every "
                   "scene and may give another realization of the same law.", ""]
     with open(os.path.join(args.out, "table.md"), "w") as f:

@@ -21,7 +21,7 @@ import subprocess
 import sys
 import tomllib
 
-from results import open_results
+from granmc import open_results
 
 
 def finite(xs):

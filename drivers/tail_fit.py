@@ -48,9 +48,9 @@ import os
 
 import numpy as np
 
-from results import open_results
+from granmc import mean_ci, open_results
+from granmc.plotting import pyplot, save
 
-LAMBDA_P = 3.2
 
 
 def load_run(path):
@@ -128,10 +128,10 @@ def free_offset_exponent(counts, edges, k0, window):
     return float(fine[int(np.argmin([misfit(b) for b in fine]))])
 
 
-def mean_ci(values):
+def finite_mean_ci(values):
+    """Mean and CI over the replicas whose fit is finite, and how many they are."""
     ok = np.isfinite(values)
-    mean = float(values[ok].mean()) if ok.any() else float("nan")
-    ci = float(LAMBDA_P * values[ok].std(ddof=1) / math.sqrt(ok.sum())) if ok.sum() > 1 else float("nan")
+    mean, ci = mean_ci(values[ok]) if ok.sum() > 1 else (float("nan"), float("nan"))
     return mean, ci, int(ok.sum())
 
 
@@ -177,9 +177,9 @@ def main():
         sel = (x >= window[0]) & (x <= window[1])
         per_replica.append(slope(x[sel], y[sel]))
     b = np.array(per_replica)
-    b_mean, b_ci, fitted = mean_ci(b)
+    b_mean, b_ci, fitted = finite_mean_ci(b)
     free = np.array([free_offset_exponent(counts[r], edges, k0, window) for r in range(replicas)])
-    free_mean, free_ci, free_fitted = mean_ci(free)
+    free_mean, free_ci, free_fitted = finite_mean_ci(free)
 
     pooled = counts.sum(axis=0)
     k, x, y = xy(pooled, edges, k0, args.quantity)
@@ -220,9 +220,7 @@ def main():
 
 
 def plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     pooled = counts.sum(axis=0)
     k, x, y = xy(pooled, edges, k0, args.quantity)
@@ -246,14 +244,11 @@ def plot(args, counts, edges, k0, window, b_mean, b_ci, free_mean, free_ci, path
     ax2.set_ylabel("y_k = ln(ln f_k0 - ln f_k)")
     ax2.legend(fontsize="small")
     fig.suptitle(f"001 sec. 5.3: {args.label or args.run}", fontsize="small")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save(fig, path)
 
 
 def plot_histograms(args, counts, edges, temperature0, mass, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     final = counts.sum(axis=0) / counts.sum()
     initial = maxwell_shell_fractions(edges, temperature0, mass)
@@ -273,8 +268,7 @@ def plot_histograms(args, counts, edges, temperature0, mass, path):
         ax.legend(fontsize="small")
     ax2.set_title("the overpopulated tail")
     fig.suptitle(f"001 Fig. 4: initial and final histograms, {args.label or args.run}", fontsize="small")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save(fig, path)
 
 
 if __name__ == "__main__":

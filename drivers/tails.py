@@ -15,8 +15,7 @@ import subprocess
 import sys
 import tomllib
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_run import run_point  # noqa: E402
+from granmc import run_point  # cached by scene text
 
 
 def main():

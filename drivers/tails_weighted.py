@@ -16,17 +16,14 @@ import argparse
 import json
 import os
 import subprocess
-import sys
 import tomllib
 
 import h5py
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from granmc import run_point  # cached by scene text
+from granmc.plotting import pyplot, save
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_run import run_point  # noqa: E402
+plt = pyplot()
 
 
 def theory_exponent(granmc, scene_path):
@@ -64,8 +61,7 @@ def plot(name, h5_path, summary, b_theory, speed, png):
     right.set_ylabel("tail exponent b")
     right.legend()
     fig.suptitle(name)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    save(fig, png)
     plt.close(fig)
 
 

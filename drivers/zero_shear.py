@@ -7,8 +7,6 @@ of eta against a*^2 over the rates, and the intercept is the Navier-Stokes value
 """
 import numpy as np
 
-LAMBDA_P = 3.2  # granmc's CI half-width in standard errors (docs/physics.md, replica statistics)
-
 
 def window_mean_shear_rate(viscosity):
     """Mean reduced shear rate a* over the samples of the viscosity window (the last half), from a summary's

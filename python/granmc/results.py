@@ -1,6 +1,6 @@
 """Opening granmc's HDF5 result files: the format version is checked first (docs/output-format.md).
 
-    from results import open_results
+    from granmc import open_results
     with open_results("run.h5") as f:
         T = f["temperature/mean"][()]
 
