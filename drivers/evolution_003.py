@@ -21,23 +21,20 @@ steady over the last half (the summary's viscosity/steady: its drift within its 
 """
 import argparse
 import copy
-import json
 import math
 import os
-import subprocess
 import tomllib
 
 import numpy as np
 
-from granmc import run_point  # cached by scene text
+from granmc import run_point, theory  # cached by scene text
 from granmc.plotting import pyplot, save
 
 WINDOWS = 5  # consecutive windows of the run in the table
 
 
-def theory(granmc, scene_path):
-    out = subprocess.run([granmc, "theory", scene_path], check=True, capture_output=True, text=True).stdout
-    return json.loads(out)["viscosity"]["first_sonine"]["eta_star"]
+def first_sonine_eta(granmc, scene_path):
+    return theory(granmc, scene_path)["viscosity"]["first_sonine"]["eta_star"]
 
 
 def series(summary, path):
@@ -81,7 +78,7 @@ def main():
         eta, eta_ci = series(summary, "viscosity/eta_star_series")
         shear, _ = series(summary, "viscosity/reduced_shear_rate")
         rows.append({"alpha": alpha, "times": times, "temperature": temperature, "eta": eta, "eta_ci": eta_ci,
-                     "shear": shear, "theory": theory(args.granmc, stem + ".toml"),
+                     "shear": shear, "theory": first_sonine_eta(args.granmc, stem + ".toml"),
                      "window": summary["viscosity"]["eta_star"], "steady": summary["viscosity"]["steady"],
                      "replicas": summary["replicas"], "seed": summary["seed"],
                      "wall_seconds": summary["wall_seconds"]})

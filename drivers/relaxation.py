@@ -25,12 +25,11 @@ import argparse
 import copy
 import json
 import os
-import subprocess
 import tomllib
 
 import numpy as np
 
-from granmc import mean_ci, open_results, run_point
+from granmc import mean_ci, open_results, run_point, theory
 from granmc.plotting import pyplot, save
 
 PAPER_TABLES = {  # 001 Tables 1 and 2: n -> (E_max, ||V||_inf)
@@ -39,11 +38,6 @@ PAPER_TABLES = {  # 001 Tables 1 and 2: n -> (E_max, ||V||_inf)
     "2": {64: (0.130, 0.306e-2), 256: (0.336e-1, 0.188e-2), 1024: (0.823e-2, 0.874e-2),
           4096: (0.211e-2, 0.581e-2), 16384: (0.455e-3, 0.148e-2)},
 }
-
-
-def theory(granmc, scene_path):
-    out = subprocess.run([granmc, "theory", scene_path], check=True, capture_output=True, text=True).stdout
-    return json.loads(out)
 
 
 def main():

@@ -14,6 +14,8 @@ import json
 import os
 import subprocess
 
+from granmc import theory
+
 SCENES = "drivers/scenes/003_f0_bias"
 
 
@@ -23,10 +25,9 @@ def main():
     p.add_argument("--out", default="results/003_f0_bias")
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
-    theory = json.loads(subprocess.run([args.granmc, "theory", f"{SCENES}/sonine.toml"], check=True,
-                                       capture_output=True, text=True).stdout)
-    a2_first = theory["viscosity"]["relaxation_f0"]["hcs_a2_first_sonine"]
-    a2_second = theory["viscosity"]["relaxation_f0"]["hcs_a2_second_sonine"]
+    predicted = theory(args.granmc, f"{SCENES}/sonine.toml")
+    a2_first = predicted["viscosity"]["relaxation_f0"]["hcs_a2_first_sonine"]
+    a2_second = predicted["viscosity"]["relaxation_f0"]["hcs_a2_second_sonine"]
     rows = []
     for name, a2 in (("a2_0.0", 0.0), ("sonine", a2_first), ("a2_0.2", 0.2)):
         summary = os.path.join(args.out, name + ".json")

@@ -15,12 +15,10 @@ at dt -> 0 per replica (2 x(dt/2) - x(dt)), as drivers/rough_split_noise.py does
 """
 import argparse
 import copy
-import json
 import os
-import subprocess
 import tomllib
 
-from granmc import mean_ci, open_results, run_point
+from granmc import mean_ci, open_results, run_point, theory
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "rough_mixture")
 ALPHA = 0.8
@@ -29,9 +27,8 @@ LONG = 4  # t_end factor at beta = -0.5: the weakly coupled spins heat up over t
 DT = 0.005  # the white-noise runs' coarser step
 
 
-def theory(granmc, stem):
-    out = subprocess.run([granmc, "theory", stem + ".toml"], check=True, capture_output=True, text=True).stdout
-    return json.loads(out)["rough"]
+def rough_theory(granmc, stem):
+    return theory(granmc, stem + ".toml")["rough"]
 
 
 def row_scenes(base, dimension, beta):
@@ -66,7 +63,7 @@ def main():
             mixture, single = (run_point(args.granmc, s, stem + suffix, args.threads)
                                for s, suffix in ((scene, ""), (one, "_one")))
             rows.append({"d": dimension, "beta": beta, "mixture": mixture, "single": single,
-                         "theory": theory(args.granmc, stem), "theory_one": theory(args.granmc, stem + "_one")})
+                         "theory": rough_theory(args.granmc, stem), "theory_one": rough_theory(args.granmc, stem + "_one")})
             print(f"  d = {dimension}, beta = {beta}: done", flush=True)
     heated = []
     for dimension in (3, 2):
@@ -84,7 +81,7 @@ def main():
                     run_point(args.granmc, s, stem, args.threads)
                     per_dt.append(last_half_ratios(stem + ".h5", species))
                 row[label] = {k: mean_and_ci(2.0 * per_dt[1][k] - per_dt[0][k]) for k in per_dt[0]}
-                row["theory_" + label] = theory(args.granmc, stem)
+                row["theory_" + label] = rough_theory(args.granmc, stem)
             heated.append(row)
             print(f"  white noise, d = {dimension}, beta = {beta}: done", flush=True)
     write_table(rows, heated, os.path.join(args.out, "table.md"))

@@ -21,14 +21,12 @@ Uses Debian's python3-h5py, python3-numpy and python3-matplotlib (hence /usr/bin
 import argparse
 import copy
 import csv
-import json
 import os
-import subprocess
 import tomllib
 
 import numpy as np
 
-from granmc import LAMBDA_P, mean_ci, open_results, run_point
+from granmc import LAMBDA_P, mean_ci, open_results, run_point, theory
 from granmc.plotting import pyplot, save
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "rough_disks")
@@ -78,12 +76,11 @@ def main():
             run_point(args.granmc, scene, stem, args.threads)
             thetas.append(stationary_theta(stem + ".h5"))
             stems.append(stem)
-        theory = json.loads(subprocess.run([args.granmc, "theory", stems[0] + ".toml"], check=True,
-                                           capture_output=True, text=True).stdout)
+        predicted = theory(args.granmc, stems[0] + ".toml")
         mean, ci = mean_ci(2.0 * thetas[1] - thetas[0])
         tolerance = ci + LAMBDA_P * ref["error"]
         rows.append({**ref, "granmc": mean, "ci": ci, "at_dt": float(thetas[0].mean()),
-                     "maxwellian": theory["rough"]["theta_white_noise"],
+                     "maxwellian": predicted["rough"]["theta_white_noise"],
                      "ratio": abs(mean - ref["theta"]) / tolerance})
         print(f"  alpha {ref['alpha']}, beta {ref['beta']}, epsilon {ref['epsilon']}: {mean:.5f} +- {ci:.5f} "
               f"(published {ref['theta']:.5f})", flush=True)

@@ -19,11 +19,10 @@ import argparse
 import json
 import os
 import subprocess
-import tempfile
 
 import numpy as np
 
-from granmc import LAMBDA_P, open_results
+from granmc import LAMBDA_P, open_results, theory_of_text
 from granmc.plotting import pyplot, save
 from zero_shear import fit_intercept, window_mean_shear_rate
 
@@ -49,17 +48,11 @@ def builds_of(sweep_dir):
         return {s.get("build", "not recorded") for s in json.load(f)["scenes"]}
 
 
-def theory(granmc, hdf5):
+def first_sonine(granmc, hdf5):
     """First-Sonine eta* and eta(alpha)/eta(1) of the scene a sweep ran (the text its HDF5 file stores)."""
     with open_results(hdf5) as h:
         text = h.attrs["scene_text"]
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(text if isinstance(text, str) else text.decode())
-    try:
-        out = subprocess.run([granmc, "theory", f.name], check=True, capture_output=True, text=True).stdout
-    finally:
-        os.unlink(f.name)
-    fs = json.loads(out)["viscosity"]["first_sonine"]
+    fs = theory_of_text(granmc, text if isinstance(text, str) else text.decode())["viscosity"]["first_sonine"]
     return fs["eta_star"], fs["eta_over_eta_elastic"]
 
 
@@ -94,7 +87,7 @@ def main():
             pts = sorted([pt for pt in points if pt[0] == alpha], key=lambda pt: pt[1])
             a_star, eta, sig = [pt[1] for pt in pts], [pt[2] for pt in pts], [pt[3] for pt in pts]
             b0, s0, c = fit_intercept(a_star, eta, sig)
-            th_star, th_ratio = theory(args.granmc, pts[0][4])
+            th_star, th_ratio = first_sonine(args.granmc, pts[0][4])
             fits[alpha] = (b0, s0, c, th_star, th_ratio, pts)
             x = np.asarray(a_star) ** 2
             shown = ax.errorbar(x, eta, yerr=LAMBDA_P * np.asarray(sig), fmt="o", label=f"alpha = {alpha}")

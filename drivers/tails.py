@@ -9,13 +9,12 @@ exactly that scene text), then drivers/tail_fit.py on DIR/run.h5 with the theory
 1 + lambda/2 from `granmc theory`.
 """
 import argparse
-import json
 import os
 import subprocess
 import sys
 import tomllib
 
-from granmc import run_point  # cached by scene text
+from granmc import run_point, theory  # cached by scene text
 
 
 def main():
@@ -43,9 +42,7 @@ def main():
     out = args.out or os.path.join("results", f"001_tails_{name}_n{n}_N{r}{storage}")
     os.makedirs(out, exist_ok=True)
     summary = run_point(args.granmc, scene, os.path.join(out, "run"), args.threads)
-    theory = json.loads(subprocess.run([args.granmc, "theory", os.path.join(out, "run.toml")], check=True,
-                                       capture_output=True, text=True).stdout)
-    b = theory.get("white_noise", {}).get("tail_exponent")
+    b = theory(args.granmc, os.path.join(out, "run.toml")).get("white_noise", {}).get("tail_exponent")
     fit = [sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), "tail_fit.py"),
            os.path.join(out, "run.h5"), out, "--label", f"{name}, n = {n}, N = {r}"] + fit_args
     if b is not None:

@@ -13,21 +13,19 @@ tail/profile) with the theory; where b levels off the window has left the pre-as
 DIR/table.md: one row per scene.
 """
 import argparse
-import json
 import os
-import subprocess
 import tomllib
 
 import h5py
 
-from granmc import run_point  # cached by scene text
+from granmc import run_point, theory  # cached by scene text
 from granmc.plotting import pyplot, save
 
 plt = pyplot()
 
 
 def theory_exponent(granmc, scene_path):
-    out = json.loads(subprocess.run([granmc, "theory", scene_path], check=True, capture_output=True, text=True).stdout)
+    out = theory(granmc, scene_path)
     for state in ("white_noise", "free_cooling"):
         if "tail_exponent" in out.get(state, {}):
             return out[state]["tail_exponent"]

@@ -5,12 +5,13 @@
         T = f["temperature/mean"][()]
 
 The modules: `results` (opening an HDF5 result file after checking its format version), `replicas` (the mean and
-confidence interval over replicas, with the convention of the C++ code), `scenes` (a scene dict as TOML text, and
-running it through `granmc run` unless its result is cached). The scripts in drivers/ import the package through
+confidence interval over replicas, with the convention of the C++ code), `scenes` (a scene dict as TOML text,
+running it through `granmc run` unless its result is cached, and `granmc theory` for it). The scripts in drivers/ import the package through
 the link drivers/granmc; elsewhere put python/ on PYTHONPATH.
 """
 from granmc.replicas import LAMBDA_P, mean_ci
 from granmc.results import FORMAT_MAJOR, FormatError, open_results
-from granmc.scenes import run_point, toml_text
+from granmc.scenes import run_point, theory, theory_of_text, toml_text
 
-__all__ = ["FORMAT_MAJOR", "FormatError", "LAMBDA_P", "mean_ci", "open_results", "run_point", "toml_text"]
+__all__ = ["FORMAT_MAJOR", "FormatError", "LAMBDA_P", "mean_ci", "open_results", "run_point", "theory", "theory_of_text",
+           "toml_text"]

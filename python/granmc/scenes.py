@@ -1,11 +1,13 @@
-"""Scenes as TOML text, and runs of `granmc run` cached by that text.
+"""Scenes as TOML text, runs of `granmc run` cached by that text, and `granmc theory`.
 
 A scene is a dict as tomllib reads it: tables of plain values, and an array of [[species]] tables. toml_text writes
-it back; run_point runs it unless the summary of exactly that text is already there.
+it back; run_point runs it unless the summary of exactly that text is already there; theory returns what
+`granmc theory` prints for it.
 """
 import json
 import os
 import subprocess
+import tempfile
 
 
 def toml_value(v):
@@ -62,3 +64,24 @@ def run_point(granmc, scene, path_stem, threads):
     subprocess.run(cmd, check=True)
     with open(summary_path) as g:
         return json.load(g)
+
+
+def theory(granmc, scene):
+    """What `granmc theory` prints for a scene (a path to its TOML file, or a scene dict), as a dict."""
+    if isinstance(scene, dict):
+        return theory_of_text(granmc, toml_text(scene))
+    out = subprocess.run([granmc, "theory", os.fspath(scene)], check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def theory_of_text(granmc, text):
+    """theory for a scene given as TOML text (for example the scene_text a result file stores), without the
+    "scene" entry (which names the file)."""
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
+        f.write(text)
+    try:
+        out = theory(granmc, f.name)
+    finally:
+        os.unlink(f.name)
+    out.pop("scene", None)  # the temporary file's name
+    return out

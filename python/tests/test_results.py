@@ -1,5 +1,5 @@
 """The package against a file granmc writes: the format check of open_results (docs/output-format.md), mean_ci
-against the file's own intervals (the C++ convention), and scenes written as TOML and run once.
+against the file's own intervals (the C++ convention), scenes written as TOML and run once, and their theory.
 
 Run by ctest (test_python: pytest, with PYTHONPATH=python and GRANMC_EXECUTABLE set)."""
 import os
@@ -11,7 +11,8 @@ import h5py
 import numpy as np
 import pytest
 
-from granmc import FORMAT_MAJOR, LAMBDA_P, FormatError, mean_ci, open_results, run_point, toml_text
+from granmc import (FORMAT_MAJOR, LAMBDA_P, FormatError, mean_ci, open_results, run_point, theory, theory_of_text,
+                    toml_text)
 
 SCENE = {
     "run": {"t_end": 0.2, "dt": 0.01, "samples": 3, "replicas": 6, "seed": 11},
@@ -93,3 +94,13 @@ def test_a_scene_already_run_is_not_run_again(run):
     changed = {**SCENE, "run": {**SCENE["run"], "seed": 12}}
     with pytest.raises((FileNotFoundError, subprocess.CalledProcessError)):
         run_point("/nonexistent/granmc", changed, stem, threads=1)
+
+
+def test_theory_of_a_scene_dict_path_or_text_is_the_same(run):
+    granmc, path = os.environ["GRANMC_EXECUTABLE"], run[1] + ".toml"
+    from_path = theory(granmc, path)
+    assert from_path.pop("scene") == path
+    assert len(from_path) > 1  # granmc theory has something to say about a cooling gas
+    assert theory(granmc, SCENE) == from_path
+    with open(path) as f:
+        assert theory_of_text(granmc, f.read()) == from_path
