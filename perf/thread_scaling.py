@@ -8,13 +8,15 @@ Usage: /usr/bin/python3 perf/thread_scaling.py [--granmc build/bin/granmc] [--ru
 
 The figure is the summary's wall_seconds (granmc's own wall time, set-up included). The one- and two-thread
 runs of a scene alternate, so that they share the state of the (shared, noisy) machine; the script prints
-every run, the speed-up of the medians, and for the runs with threads inside the replica the rounds'
-counts. It also checks that the two-thread files hold the bits of the one-thread files
+every run, the speed-up of the medians, the median and range of the pairs' ratios (run k on one thread over run k
+on two, which made back to back share the machine's state of the moment), and for the runs with threads inside the
+replica the rounds' counts. --only REGEX keeps the scenes whose file name matches. It also checks that the two-thread files hold the bits of the one-thread files
 (tests/same_bits.py --files), and exits with status 1 if they do not.
 """
 import argparse
 import json
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -43,13 +45,17 @@ def main():
     p.add_argument("--granmc", default=os.path.join(ROOT, "build", "bin", "granmc"))
     p.add_argument("--runs", type=int, default=3)
     p.add_argument("--work", default=None, help="directory for the files (default: a temporary one)")
+    p.add_argument("--only", default="", help="run only the scenes whose file name matches this regular expression")
     args = p.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="granmc-threads-")
     os.makedirs(work, exist_ok=True)
     same = True
-    print("| scene | 1 thread (s) | 2 threads (s) | speed-up of the medians | rounds, deferred, rerun in order |")
-    print("|---|---|---|---|---|")
+    print("| scene | 1 thread (s) | 2 threads (s) | speed-up of the medians | paired ratios: median [range] "
+          "| rounds, deferred, rerun in order |")
+    print("|---|---|---|---|---|---|")
     for name, extra, what in CASES:
+        if not re.search(args.only, name):
+            continue
         scene = os.path.join(SCENES, name)
         stem = os.path.join(work, os.path.splitext(name)[0])
         one, two = [], []
@@ -61,12 +67,14 @@ def main():
         same = same and check.returncode == 0
         w1 = sorted(s["wall_seconds"] for s in one)
         w2 = sorted(s["wall_seconds"] for s in two)
+        paired = sorted(a["wall_seconds"] / b["wall_seconds"] for a, b in zip(one, two))
         rounds = "-"
         if "collision_rounds" in two[0]:
             s = two[0]
             rounds = f"{s['collision_rounds']}, {s['collision_rounds_deferred']}, {s['collision_rounds_in_order']}"
         print(f"| {what} | {', '.join(f'{w:.2f}' for w in w1)} | {', '.join(f'{w:.2f}' for w in w2)} | "
-              f"{statistics.median(w1) / statistics.median(w2):.2f} | {rounds} |")
+              f"{statistics.median(w1) / statistics.median(w2):.2f} | "
+              f"{statistics.median(paired):.2f} [{paired[0]:.2f}, {paired[-1]:.2f}] | {rounds} |")
     print("two-thread files hold the one-thread bits" if same else "two-thread files DIFFER from the one-thread files")
     return 0 if same else 1
 
