@@ -18,6 +18,7 @@
 #include "drivers/sweep.hpp"
 #include "granmc/version.hpp"
 #include "io/build_id.hpp"
+#include "io/explain_rates.hpp"
 #include "io/output_schema.hpp"
 #include "io/scene_file.hpp"
 #include "io/theory_json.hpp"
@@ -130,10 +131,12 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
     std::printf("threads      %d replicas at a time, one thread each\n", what.replicas_in_flight);
   // Threads inside a replica shorten it by a factor that depends on its size and the machine (docs/scaling.md):
   // not counted.
-  const double seconds = what.candidates / (what.candidates_per_second * what.replicas_in_flight);
-  std::printf("work         %s%.3g candidate pairs, about %.0f s on %d threads at %.2g candidates/s per thread\n",
-              what.candidates_upper_bound ? "at most " : "", what.candidates, seconds, threads,
-              what.candidates_per_second);
+  const double rate = measured_candidates_per_second(what.rate_class);
+  const double seconds = what.candidates / (rate * what.replicas_in_flight);
+  std::printf(
+      "work         %s%.3g candidate pairs, about %.0f s on %d threads at %.2g candidates/s per thread (%s, "
+      "drivers/explain_rates.toml)\n",
+      what.candidates_upper_bound ? "at most " : "", what.candidates, seconds, threads, rate, what.rate_class.c_str());
   return exit_ok;
 }
 

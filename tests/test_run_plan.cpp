@@ -4,11 +4,15 @@
 // explanation are read off the plan.
 #include <cstdio>
 #include <numbers>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "io/explain_rates.hpp"
 #include "io/scene_file.hpp"
 #include "kernel/setup/explain.hpp"
 #include "kernel/setup/run_scene.hpp"
@@ -163,4 +167,38 @@ particles_per_shell = 8
   const RunPlan event = make_plan(disks);
   EXPECT_EQ(std::get<VariableHardDisks>(std::get<EventPlan>(event.scheme).kernel).lambda, 0.5);
   EXPECT_EQ(instantiation_name(event, disks), "event<vhs-disk, white-noise>");
+}
+
+// --explain's time estimate: every class of run that explain_plan names has a measured rate in
+// drivers/explain_rates.toml (embedded at build time), and the class follows the scheme, the kernel, the storage
+// and whether the particles fit in the caches (100 MB).
+TEST(RunPlan, EveryRateClassOfTheTimeEstimateHasAMeasuredRate) {
+  const auto rate_class = [](const std::string& method, const std::string& kernel, long particles,
+                             const std::string& storage, bool weighted) {
+    const std::string text = "[run]\nmethod = \"" + method + "\"\nt_end = 0.1\n" +
+                             (method == "dsmc" ? "dt = 0.01\n" : "") + "samples = 1\nstorage = \"" + storage +
+                             "\"\n[[species]]\nparticles = " + std::to_string(particles) +
+                             "\n[collision]\nkernel = \"" + kernel + "\"\nrate = 1.0\nrestitution = 0.5\n" +
+                             "[thermostat]\nkind = \"white-noise\"\nbeta = 1.0\n" +
+                             (weighted ? "[weights]\nscheme = \"swpm\"\nparticles_per_shell = 8\n" : "");
+    const Scene scene = parse_scene(text, "rates.toml");
+    return explain_plan(make_plan(scene), scene, 2).rate_class;
+  };
+  const std::vector<std::pair<std::string, std::string>> expected = {
+      {rate_class("dsmc", "hard-sphere", 1000, "double", false), "stepped.in_cache"},
+      {rate_class("dsmc", "hard-sphere", 4000000, "double", false), "stepped.beyond_caches"},
+      {rate_class("event", "hard-sphere", 1000, "double", false), "event.in_cache"},
+      {rate_class("event", "hard-sphere", 4000000, "double", false), "event.beyond_caches_double"},
+      {rate_class("event", "hard-sphere", 8000000, "float", false), "event.beyond_caches_float"},
+      {rate_class("event", "maxwell", 1000, "double", false), "event.maxwell_in_cache"},
+      {rate_class("event", "maxwell", 4000000, "double", false), "event.maxwell_beyond_caches_double"},
+      {rate_class("event", "maxwell", 8000000, "float", false), "event.maxwell_beyond_caches_float"},
+      {rate_class("event", "maxwell", 1000, "double", true), "weighted.maxwell"},
+      {rate_class("event", "hard-sphere", 1000, "double", true), "weighted.rate_dependent"},
+  };
+  for (const auto& [named, want] : expected) {
+    EXPECT_EQ(named, want);
+    EXPECT_GT(measured_candidates_per_second(named), 0.0) << named;
+  }
+  EXPECT_THROW(measured_candidates_per_second("stepped.on_the_moon"), std::runtime_error);
 }

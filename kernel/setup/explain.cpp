@@ -35,34 +35,29 @@ double expected_max_speed(double particles) {
   return 0.5 * (lo + hi);
 }
 
-/// Candidates per second per thread for the time estimate: whole runs on 2 threads on the reference machine
-/// of docs/performance.md (2 cores), set-up included. A replica of more than 100 MB of particles misses the
-/// caches at every candidate and runs at about half the rate.
-///  - event scheme, 001 Example 8 (hard spheres): 10^6 particles x 10 replicas in 8.1 s (`make tails-001`);
-///    10^7 x 100 replicas, 4.72e10 candidates, in 1337 s with float storage and 1681 s with double (`make
-///    tails-001-full-float`, `tails-001-full`). Maxwell's kernel, where every candidate collides and no
-///    majorant is kept, 1.4 times faster (Example 7: 2.00e10 in 433 s and 494 s);
-///  - time-stepped DSMC, cooling state at alpha = 0.8: `make hcs-alpha08` (16 x 10^5 particles, 1.45e8
-///    candidates in 0.93-1.14 s) and the same scene with 2 x 10^7 particles to t = 2 (5.6e8 in 10-12 s).
 /// Whether every candidate collides (Maxwell's kernel, any dimension).
 template <class Choice>
 bool constant_rate(const Choice& kernel) {
   return std::visit([](const auto& k) { return std::decay_t<decltype(k)>::constant_rate; }, kernel);
 }
 
-double event_candidates_per_second(const EventPlan& plan, bool beyond_caches) {
-  const double maxwell = constant_rate(plan.kernel) ? 1.4 : 1.0;
-  if (!beyond_caches) return maxwell * 2.7e7;
-  return maxwell * (std::holds_alternative<StoredAs<float>>(plan.storage) ? 1.77e7 : 1.40e7);
+/// The rate classes of drivers/explain_rates.toml: a replica of more than 100 MB of particles misses the caches
+/// at every candidate; Maxwell's kernel collides at every candidate and keeps no majorant.
+std::string event_rate_class(const EventPlan& plan, bool beyond_caches) {
+  const std::string maxwell = constant_rate(plan.kernel) ? "maxwell_" : "";
+  if (!beyond_caches) return "event." + maxwell + "in_cache";
+  return "event." + maxwell +
+         (std::holds_alternative<StoredAs<float>>(plan.storage) ? "beyond_caches_float" : "beyond_caches_double");
+}
+std::string weighted_rate_class(const WeightedPlan& plan) {
+  return constant_rate(plan.kernel) ? "weighted.maxwell" : "weighted.rate_dependent";
+}
+std::string stepped_rate_class(bool beyond_caches) {
+  return beyond_caches ? "stepped.beyond_caches" : "stepped.in_cache";
 }
 /// Weighted particles (schemes/swpm_scheme.hpp): velocity, update time, weight, weight class, place in the
-/// class and the class's entry. Candidates per second per thread, weight control included, 001 Example 7's
-/// gas with 256 particles per shell of { shells = 128, radius = 40.0 }, 2 replicas on 2 threads: 1.4e6 with
-/// Maxwell's kernel (t_end = 2.5, 6.2e6 candidates in 2.3 s), 2.5e6 with hard spheres (t_end = 0.5, 9.5e7
-/// in 19 s), where more candidates are fictitious.
+/// class and the class's entry.
 constexpr std::size_t weighted_bytes_per_particle = 3 * 8 + 8 + 8 + 4 + 4 + 4;
-double weighted_candidates_per_second(const WeightedPlan& plan) { return constant_rate(plan.kernel) ? 1.4e6 : 2.5e6; }
-double stepped_candidates_per_second(bool beyond_caches) { return beyond_caches ? 2.5e7 : 6.6e7; }
 
 void explain_gas_memory(const Scene& scene, PlanExplanation& out) {
   out.bytes_per_particle = stored_bytes_per_particle(scene);
@@ -107,7 +102,7 @@ void explain(const EventPlan& plan, const Scene& scene, PlanExplanation& out) {
   out.candidates = scene.run.replicas * scene.run.t_end * 0.5 * unit_sphere_area(scene.run.dimension) * c.rate *
                    (n - 1.0) * std::pow(majorant, c.lambda);
   out.candidates_upper_bound = false;
-  out.candidates_per_second = event_candidates_per_second(plan, beyond_caches(scene));
+  out.rate_class = event_rate_class(plan, beyond_caches(scene));
 }
 
 /// Weighted particles: about M particles in each histogram shell (every shell once the tail has grown), at
@@ -134,7 +129,7 @@ void explain(const WeightedPlan& plan, const Scene& scene, PlanExplanation& out)
   out.candidates = scene.run.replicas * scene.run.t_end * unit_sphere_area(scene.run.dimension) * c.rate * 2.0 * n *
                    std::pow(2.0 * scene.histogram.radius, c.lambda);
   out.candidates_upper_bound = true;
-  out.candidates_per_second = weighted_candidates_per_second(plan);
+  out.rate_class = weighted_rate_class(plan);
 }
 
 /// The time-stepped scheme: candidates, summed over pairs, 1/2 N_i omega_max^(ij) int u dt, omega_max from the
@@ -204,7 +199,7 @@ void explain(const SteppedPlan& plan, const Scene& scene, PlanExplanation& out) 
         plan.kernel);
   }
   out.candidates *= mean_form * static_cast<double>(scene.run.replicas);
-  out.candidates_per_second = stepped_candidates_per_second(beyond_caches(scene));
+  out.rate_class = stepped_rate_class(beyond_caches(scene));
 }
 
 /// An intruder: one per replica; the work is its collision events, at the mean rate rho <|v1 - v|> with both

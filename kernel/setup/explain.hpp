@@ -24,7 +24,8 @@ struct PlanExplanation {
   double candidates = 0.0;              // estimated candidate pairs, all replicas (gas)
   double events = 0.0;                  // estimated collision events, all replicas (intruder)
   bool candidates_upper_bound = false;  // true when the estimate assumes T stays at T(0)
-  double candidates_per_second = 0.0;   // per thread, this machine's measured rate for such a run (gas)
+  std::string rate_class;               // the runs whose measured rate estimates the time (gas): a key of
+                                        // drivers/explain_rates.toml, e.g. "stepped.beyond_caches"
 };
 
 /// Bytes of particle state per particle in the scene's storage precision (32 for double, 16 for float).
