@@ -257,7 +257,7 @@ mpi-test: mpi-configure
 bench: build
 	cmake --build $(BUILD) --target bench
 
-# Cost of each effect (issue 8 item 3, perf/bench_effects.cpp): ratios to the plain scene, about 90 s.
+# Cost of each effect (perf/bench_effects.cpp): ratios to the plain scene, about 90 s.
 bench-effects: build
 	cmake --build $(BUILD) --target bench-effects
 
@@ -271,7 +271,7 @@ bench-threads: build
 bench-models: build
 	$(PYTHON) perf/model_cost.py --granmc $(GRANMC)
 
-# Regression benchmarks (issue 10 item 4, perf/bench_compare.py, docs/performance.md): the ratios granmc / naive,
+# Regression benchmarks (perf/bench_compare.py, docs/performance.md): the ratios granmc / naive,
 # granmc / packed gather-scatter limit (DSMC stage and event scheme) and effect / plain, compared with
 # perf/baselines/baseline.json; fails if one moved the wrong way by more than its threshold (10 %, or the
 # floor for that ratio in the baseline).

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""How much the choice of f^(0) in 003's relaxation term moves the measured viscosity (issue 4, item 4).
+"""How much the choice of f^(0) in 003's relaxation term moves the measured viscosity.
 
 Usage: /usr/bin/python3 drivers/relaxation_bias.py [--granmc build/bin/granmc] [--out results/003_f0_bias]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The long stability study (issue 7, `make stability`): hard cases at full size, each checked.
+"""The long stability study (`make stability`): hard cases at full size, each checked.
 
 Usage: /usr/bin/python3 drivers/stability.py [--granmc build/bin/granmc] [--out results/stability]
 

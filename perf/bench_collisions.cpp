@@ -308,7 +308,7 @@ void print_ratio_table(const perf::RecordingReporter& rep) {
                   g("candidates/s") / limit);
     }
     std::printf(
-        "(limit: random pair gather + scatter of packed records with prefetch, nothing else; issue 10 "
+        "(limit: random pair gather + scatter of packed records with prefetch, nothing else; "
         "target granmc / limit >= 0.5)\n");
   }
   const double a = rep.value("granmc_draws", "", "candidates/s"), b = rep.value("naive_draws", "", "candidates/s");
@@ -329,8 +329,8 @@ int main(int argc, char** argv) {
   for (const std::int64_t n : kSizes) {
     benchmark::RegisterBenchmark("granmc_collide", granmc_stage)->Arg(n)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("naive_collide", naive_collide)->Arg(n)->Unit(benchmark::kMillisecond);
-    // The limit kernel, perf/gather_scatter_limit.hpp: the bound the stage is held to (issue 10 item 3: at
-    // least half its pairs/s), measured in the same run.
+    // The limit kernel, perf/gather_scatter_limit.hpp: the bound the stage is held to (at least
+    // half its pairs/s), measured in the same run.
     benchmark::RegisterBenchmark("limit_collide", perf::limit_pairs<kCandidatesPerIteration>)
         ->Arg(n)
         ->Unit(benchmark::kMillisecond);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regression check of the benchmark suite by ratios (issue 10 item 4; docs/performance.md, Regression benchmarks).
+"""Regression check of the benchmark suite by ratios (docs/performance.md, Regression benchmarks).
 
 Usage: /usr/bin/python3 perf/bench_compare.py [--bin build/bin] [--save] [--threshold 0.10] [--rounds K]
                         [--repetitions R] [--json-dir DIR] [--from-json DIR] [--baseline FILE] [--self-test]

@@ -1,4 +1,4 @@
-// The cost of each effect (issue 8, item 3): whole time steps of Dsmc through its public API (advance_to)
+// The cost of each effect: whole time steps of Dsmc through its public API (advance_to)
 // for a hard-sphere cooling state at N = 10^6, per candidate pair, with each effect that exists today
 // added alone, as a ratio to the plain scene measured in the same run; and a hand-specialised kernel
 // for the plain scene (perf/hand_specialised_hcs.hpp), which the plain scene should match within 3%.
@@ -515,7 +515,7 @@ void print_table(const perf::RecordingReporter& rep) {
   }
   const double hand = v("hand_specialised", "time/cand");
   if (!std::isnan(hand) && !std::isnan(plain))
-    std::printf("\nplain / hand_specialised = %.3f (issue 8 target: within 3%%, i.e. <= 1.03)\n", plain / hand);
+    std::printf("\nplain / hand_specialised = %.3f (target: within 3%%, i.e. <= 1.03)\n", plain / hand);
   if (!std::isnan(plain) && paired_rounds > 0) {
     std::printf(
         "\nPaired: each scene against plain, %d rounds of one step of each back to back (CPU time of this "
@@ -528,8 +528,8 @@ void print_table(const perf::RecordingReporter& rep) {
       const PairedRatio r = paired_ratio(gas(b), gas(plain_bench), paired_rounds);
       std::printf("| %s | %.3f | [%.3f, %.3f] |\n", b.name, r.median, r.low, r.high);
       if (std::string(b.name) == "hand_specialised")
-        std::printf("|   (plain / hand_specialised) | %.3f | [%.3f, %.3f] (issue 8 target: <= 1.03) |\n",
-                    1.0 / r.median, 1.0 / r.high, 1.0 / r.low);
+        std::printf("|   (plain / hand_specialised) | %.3f | [%.3f, %.3f] (target: <= 1.03) |\n", 1.0 / r.median,
+                    1.0 / r.high, 1.0 / r.low);
     }
   }
   const double apply = v("white_noise_apply", "time/particle"), draws = v("white_noise_draws", "time/particle");

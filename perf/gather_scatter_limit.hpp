@@ -3,7 +3,7 @@
 // collision stage does it (read two particles' velocities, write both back), with the particles in packed
 // 32-byte records (x, y, z, aux) and the pairs generated kPrefetchDistance ahead and prefetched. It is
 // the layout decision's measurement (perf/bench_layout.cpp) and the bound the collision stage is
-// compared with in the same run (perf/bench_collisions.cpp and perf/bench_event.cpp, issue 10 item 3, as
+// compared with in the same run (perf/bench_collisions.cpp and perf/bench_event.cpp, as
 // the benchmark limit_pairs below).
 //
 // Each pair: two indices k, l uniform on {0..N-1} and a direction from a table of 8 unit vectors, all from

@@ -1,7 +1,7 @@
 #pragma once
 // A hand-specialised time step for the plain scene of perf/bench_effects.cpp, written for that case
 // alone: one species of equal-mass inelastic hard spheres, dilute (chi = 1), no thermostat, no other
-// effect. It is the reference that issue 8 item 3 asks the library's plain scene to match (within 3%).
+// effect. It is the reference the library's plain scene is held to (within 3%).
 //
 // Same algorithm and random-number layout as collide_step<HardSphere> (kernel/schemes/collision_stage.hpp,
 // 000 sec. 3): candidate s of step t uses Philox block (collision_pair, 0, t, 2 s) for the indices k and

@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""The paired ratios of bench_effects over several processes (issue 8 item 3; docs/performance.md, effects).
+"""The paired ratios of bench_effects over several processes (docs/performance.md, effects).
 
 Usage: /usr/bin/python3 perf/paired_processes.py [--bin build/bin] [--processes K] [--scenes REGEX]
                                                   [--paired-rounds R] [--one-at-a-time]
 
 Within one process, bench_effects' paired ratios (each scene against plain, one step of each back to back)
 have confidence intervals of +-0.5-2 %, but the ratio itself moves by up to +-8 % from one process to the
-next (measured 2026-12-01: plain / hand_specialised 0.936 to 1.094 in three processes whose intervals were
+next (measured: plain / hand_specialised 0.936 to 1.094 in three processes whose intervals were
 +-0.5 %). The memory placement of each process (address-space randomisation, which physical pages back
 the particle buffers and the stack arrays of a batch) decides it, and it favours one code or the other at
 random. So a ratio of two codes is a mean over placements, and this script samples placements: it runs
@@ -17,7 +17,7 @@ binomial(K, 1/2) law), and the range.
 
 --one-at-a-time runs each scene of --scenes in processes of its own with plain alone (K processes per
 scene), not all scenes in one process. In processes holding all ten gases of bench_effects (320 MB) the
-plain scene measured slow against scenes that run the identical code (2026-12-01, 11 processes: median
+plain scene measured slow against scenes that run the identical code (11 processes: median
 ratio to plain 0.98 for enskog_chi, 0.95 for the Gaussian thermostat's one log1p per step, plain /
 hand-specialised 1.10), and not with one other gas per process (0.97-1.04 and 1.02), for a reason not
 found; so the ratios in docs/performance.md are measured one scene at a time.
@@ -85,7 +85,7 @@ def main():
         print(f"| {scene} | {med:.3f} | [{lo:.3f}, {hi:.3f}] | {min(v):.3f} - {max(v):.3f} |")
     if "hand_specialised" in ratios:
         med, lo, hi = median_interval([1.0 / r for r in ratios["hand_specialised"]])
-        print(f"\nplain / hand_specialised: {med:.3f}, 95 % CI [{lo:.3f}, {hi:.3f}] (issue 8 target: within 3 %)")
+        print(f"\nplain / hand_specialised: {med:.3f}, 95 % CI [{lo:.3f}, {hi:.3f}] (target: within 3 %)")
 
 
 if __name__ == "__main__":

@@ -272,7 +272,7 @@ TEST_F(Cli, BadArgumentsExitTwo) {
   EXPECT_TRUE(outputs().empty());
 }
 
-// Every bad scene of issue 2 item 7: exit 2, one message naming the file and the key, no output file.
+// Every kind of bad scene: exit 2, one message naming the file and the key, no output file.
 TEST_F(Cli, BadScenesExitTwoNamingFileAndKeyWithoutOutput) {
   struct Case {
     std::string name, text, key;

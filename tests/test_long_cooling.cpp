@@ -24,7 +24,7 @@ Scene long_cooling_scene() {
     [run]
     seed = 31
     replicas = 8
-    t_end = 1e21  # Haff: T(t_end) / T(0) ~ 1e-41 (issue 7: a cooling run over 40 decades)
+    t_end = 1e21  # Haff: T(t_end) / T(0) ~ 1e-41 (a cooling run over 40 decades)
     dt = 0.02     # about 0.14 mean free times, kept so by the thermal scaling
     dt_scaling = "thermal"
     samples = 80

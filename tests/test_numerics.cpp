@@ -1,4 +1,4 @@
-// Numerical hygiene (issue 7 item 4): the sums behind moments of 10^7 particles are compensated, and the
+// Numerical hygiene: the sums behind moments of 10^7 particles are compensated, and the
 // random unit vectors and Gaussians have the statistics they claim (moments with CIs, a chi-square test
 // of the direction distribution on equal-area cells). Each check would fail without what it checks.
 #include <algorithm>
