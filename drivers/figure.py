@@ -45,7 +45,6 @@ import argparse
 import copy
 import json
 import os
-import shutil
 import subprocess
 import sys
 import tomllib
@@ -53,7 +52,8 @@ import tomllib
 import numpy as np
 
 from granmc import LAMBDA_P
-from granmc.scenes import toml_text, toml_value
+from granmc.scenes import run_sweep as granmc_sweep
+from granmc.scenes import toml_text
 from granmc.plotting import pyplot, save
 from zero_shear import fit_intercept, window_mean_shear_rate
 
@@ -149,42 +149,13 @@ def sweep_values(base, scene, prefix=""):
     return values
 
 
-def values_key(values):
-    """The same text for the values of a point and for those index.json records of its sweep scene."""
-    return json.dumps(sorted(values.items()))
-
-
 def run_sweep(args, base_path, scenes, base, sweep_dir):
     """Runs the scenes (point -> scene dict) as [[scenes]] of one sweep on the base scene file `base_path`
     (parsed: `base`) in sweep_dir; returns point -> (summary, HDF5 path)."""
-    os.makedirs(sweep_dir, exist_ok=True)
-    base_name = os.path.basename(base_path)
-    shutil.copyfile(base_path, os.path.join(sweep_dir, base_name))  # `base` is relative to the sweep file
-    values = {point: sweep_values(base, scene) for point, scene in scenes.items()}
-    tables = {values_key(v): v for v in values.values()}  # points with the same scene run once
-    lines = [f"# Written by drivers/figure.py {args.figure}: one [[scenes]] table per simulated point.",
-             f"base = {json.dumps(base_name)}"]
-    for v in tables.values():
-        lines += ["", "[[scenes]]"] + [f"{json.dumps(k)} = {toml_value(x)}" for k, x in v.items()]
-    sweep_path = os.path.join(sweep_dir, "sweep.toml")
-    with open(sweep_path, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    cmd = ["mpirun", "-np", str(args.mpi), "--oversubscribe"] if args.mpi else []
-    cmd += [args.granmc, "sweep", sweep_path, "--out-dir", sweep_dir]
-    if args.threads:
-        cmd += ["--threads", str(args.threads)]
-    print("  " + " ".join(cmd), flush=True)
-    subprocess.run(cmd, check=True)
-    with open(os.path.join(sweep_dir, "index.json")) as f:
-        index = {values_key(s["values"]): s for s in json.load(f)["scenes"]}
-    out = {}
-    for point, v in values.items():
-        s = index.get(values_key(v), {"name": json.dumps(v), "status": "missing from index.json"})
-        if s["status"] != "done":
-            sys.exit(f"figure.py: {sweep_dir}: scene {s['name']} did not finish; rerun to resume")
-        with open(os.path.join(sweep_dir, s["summary"])) as f:
-            out[point] = (json.load(f), os.path.join(sweep_dir, s["hdf5"]))
-    return out
+    points = list(scenes)
+    ran = granmc_sweep(args.granmc, base_path, [sweep_values(base, scenes[p]) for p in points], sweep_dir,
+                       threads=args.threads, mpi=args.mpi, writer=f"drivers/figure.py {args.figure}")
+    return dict(zip(points, ran))
 
 
 def run_points(args, here, fig, curves, bases, scenes, out):

@@ -1,11 +1,12 @@
 """Scenes as TOML text, runs of `granmc run` cached by that text, and `granmc theory`.
 
 A scene is a dict as tomllib reads it: tables of plain values, and an array of [[species]] tables. toml_text writes
-it back; run_point runs it unless the summary of exactly that text is already there; theory returns what
-`granmc theory` prints for it.
+it back; run_point runs it unless the summary of exactly that text is already there; run_sweep runs many scenes
+made from one base scene file as one `granmc sweep`; theory returns what `granmc theory` prints for a scene.
 """
 import json
 import os
+import shutil
 import subprocess
 import tempfile
 
@@ -84,4 +85,42 @@ def theory_of_text(granmc, text):
     finally:
         os.unlink(f.name)
     out.pop("scene", None)  # the temporary file's name
+    return out
+
+
+def values_key(values):
+    """The same text for a [[scenes]] table's values and for those its sweep's index.json records."""
+    return json.dumps(sorted(values.items()))
+
+
+def run_sweep(granmc, base_path, tables, sweep_dir, threads=None, mpi=None, writer="python/granmc"):
+    """Runs `granmc sweep` in sweep_dir on the base scene file `base_path` with one [[scenes]] table per entry of
+    `tables` (each a dict of dotted keys to values, docs/scenes.md, "Sweep files"); `mpi`: that many ranks under
+    mpirun. granmc skips the scenes a previous call finished. Returns, in the order of `tables`, each scene's
+    summary (a dict) and the path of its HDF5 file; exits naming the scene if one did not finish."""
+    os.makedirs(sweep_dir, exist_ok=True)
+    base_name = os.path.basename(base_path)
+    shutil.copyfile(base_path, os.path.join(sweep_dir, base_name))  # `base` is relative to the sweep file
+    unique = {values_key(v): v for v in tables}  # equal tables run once
+    lines = [f"# Written by {writer}: one [[scenes]] table per scene.", f"base = {json.dumps(base_name)}"]
+    for v in unique.values():
+        lines += ["", "[[scenes]]"] + [f"{json.dumps(k)} = {toml_value(x)}" for k, x in v.items()]
+    sweep_path = os.path.join(sweep_dir, "sweep.toml")
+    with open(sweep_path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    cmd = ["mpirun", "-np", str(mpi), "--oversubscribe"] if mpi else []
+    cmd += [granmc, "sweep", sweep_path, "--out-dir", sweep_dir]
+    if threads:
+        cmd += ["--threads", str(threads)]
+    print("  " + " ".join(cmd), flush=True)
+    subprocess.run(cmd, check=True)
+    with open(os.path.join(sweep_dir, "index.json")) as f:
+        index = {values_key(s["values"]): s for s in json.load(f)["scenes"]}
+    out = []
+    for v in tables:
+        s = index.get(values_key(v), {"name": json.dumps(v), "status": "missing from index.json"})
+        if s["status"] != "done":
+            raise SystemExit(f"{sweep_dir}: scene {s['name']} did not finish; rerun to resume")
+        with open(os.path.join(sweep_dir, s["summary"])) as f:
+            out.append((json.load(f), os.path.join(sweep_dir, s["hdf5"])))
     return out

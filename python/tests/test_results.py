@@ -1,5 +1,6 @@
 """The package against a file granmc writes: the format check of open_results (docs/output-format.md), mean_ci
-against the file's own intervals (the C++ convention), scenes written as TOML and run once, and their theory.
+against the file's own intervals (the C++ convention), scenes written as TOML and run once, sweeps, and their
+theory.
 
 Run by ctest (test_python: pytest, with PYTHONPATH=python and GRANMC_EXECUTABLE set)."""
 import os
@@ -11,8 +12,8 @@ import h5py
 import numpy as np
 import pytest
 
-from granmc import (FORMAT_MAJOR, LAMBDA_P, FormatError, mean_ci, open_results, run_point, theory, theory_of_text,
-                    toml_text)
+from granmc import (FORMAT_MAJOR, LAMBDA_P, FormatError, mean_ci, open_results, run_point, run_sweep, theory,
+                    theory_of_text, toml_text)
 
 SCENE = {
     "run": {"t_end": 0.2, "dt": 0.01, "samples": 3, "replicas": 6, "seed": 11},
@@ -104,3 +105,15 @@ def test_theory_of_a_scene_dict_path_or_text_is_the_same(run):
     assert theory(granmc, SCENE) == from_path
     with open(path) as f:
         assert theory_of_text(granmc, f.read()) == from_path
+
+
+def test_a_sweep_runs_each_distinct_table_once_and_answers_in_order(tmp_path):
+    base = tmp_path / "base.toml"
+    base.write_text(toml_text(SCENE))
+    tables = [{"collision.restitution": 0.5}, {"collision.restitution": 0.7}, {"collision.restitution": 0.5}]
+    ran = run_sweep(os.environ["GRANMC_EXECUTABLE"], str(base), tables, str(tmp_path / "sweep"), threads=1)
+    assert [summary["theory"]["alpha"] for summary, _ in ran] == [0.5, 0.7, 0.5]
+    assert ran[0][1] == ran[2][1]  # the same scene, one run
+    assert len({h5 for _, h5 in ran}) == 2
+    with open_results(ran[1][1]) as f:
+        assert "temperature" in f
