@@ -46,7 +46,6 @@
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/collide/rough_rule.hpp"
 #include "kernel/core/address_filter.hpp"
-#include "kernel/core/address_set.hpp"
 #include "kernel/core/batch_variates.hpp"
 #include "kernel/core/bounded_list.hpp"
 #include "kernel/core/philox_stream.hpp"
@@ -253,19 +252,17 @@ class BatchedStage {
   void run_chunk(std::uint64_t first, std::uint64_t end) {
     outcomes_.reset(end - first), undo_.reset(2 * (end - first)), spin_undo_.reset(rough ? 2 * (end - first) : 0);
     deferred_.clear();
-    held_back_.clear();
-    const auto met = [&](const void* a) {
-      return earlier_.may_contain(a) || (!held_back_.empty() && held_back_.contains(a));
-    };
     run_batches(first, end, [&](std::uint64_t i, std::uint64_t s0, std::uint64_t m) -> const Drawn& {
       Drawn& d = drawn_[i & 1u];
       draw(d, s0, m);
       skip_[i & 1u] = 0;
       for (std::uint64_t b = 0; b < m; ++b) {
-        if (met(d.pk[b].address()) || met(d.pl[b].address())) {
+        if (earlier_.may_contain(d.pk[b].address()) || earlier_.may_contain(d.pl[b].address())) {
           skip_[i & 1u] |= std::uint64_t{1} << b;
-          held_back_.insert(d.pk[b].address());
-          held_back_.insert(d.pl[b].address());
+          // A deferred candidate's particles join the filter: a later candidate of the chunk that names one is
+          // deferred too, and replays after it.
+          earlier_.insert(AddressFilter::key(d.pk[b].address()));
+          earlier_.insert(AddressFilter::key(d.pl[b].address()));
           deferred_.push_back(
               {s0 + b, d.pk[b], d.pl[b], d.qs[b], d.accept[b], d.dir1[b], d.dir2[b], d.sx[b], d.sy[b], d.sz[b]});
         }
@@ -703,12 +700,11 @@ class BatchedStage {
     double accept, dir1, dir2, sx, sy, sz;
   };
   std::vector<DeferredCandidate> deferred_;
-  // The round's sets, absent from a stage outside a round (the filter alone is 64 KB, and a stage is made per step).
+  // The round's filter, absent from a stage outside a round (it is 64 KB, and a stage is made per step).
   struct NotInRound {};
   template <class T>
   using RoundOnly = std::conditional_t<in_round, T, NotInRound>;
   [[no_unique_address]] RoundOnly<AddressFilter> earlier_;
-  [[no_unique_address]] RoundOnly<AddressSet> held_back_;
   BoundedList<Outcome> outcomes_;
   BoundedList<std::pair<typename Store::Particle, Vec3>> undo_;  // particle, velocity before a collision
   struct SpinBefore {
