@@ -2,7 +2,8 @@
 // does not enter): collide_step<HardSphere> and the hand-specialised kernel (perf/hand_specialised_hcs.hpp)
 // each run 20 steps of 10^5 candidates on the same gas of 10^5 particles (alpha = 0.8), each inside a
 // function of its own, so that callgrind's inclusive count of that function divided by 2 10^6 is the
-// count per candidate. docs/performance.md ("Instructions per candidate") gives the commands:
+// count per candidate. The commands (docs/notebook/2026-12-06-performance-history.md, "Instructions per
+// candidate", has the counts they gave):
 //
 //   cmake -S . -B build-vg -DCMAKE_BUILD_TYPE=Release -DGRANMC_BENCH=ON -DGRANMC_NATIVE=OFF
 //         -DCMAKE_CXX_FLAGS="-march=x86-64-v3 -g"          (one line; valgrind does not run AVX-512 code)
