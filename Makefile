@@ -8,7 +8,7 @@ GRANMC := $(BUILD)/bin/granmc
 MPI_BUILD ?= build-mpi
 
 .PHONY: all setup configure build run test lint format output-format-page thread-test sanitize-test portable-test bench clean mpi-setup mpi-configure mpi mpi-test hcs-alpha08 hcs-disks-alpha08 rough-disks-noise rough-mixture fig-shear-disks fig-mixture-disks fig-000-1 fig-000-2 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12 fig-000-7-shear-rate fig-000-8-shear-rate fig-000-sec5 fig-000-6-elastic fig-003 evolution-003 relaxation-bias-003 figures-000 fig-002-1 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8 figures-002 \
-	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted tails-disks-weighted intruder-cost accuracy-cost bench-effects bench-threads bench-models stability
+	table-001-1 table-001-2 fig-001-3 relaxation-001 tails-001 tails-001-full tails-001-full-float tails-001-weighted tails-disks-weighted intruder-cost accuracy-cost bench-effects bench-threads bench-naive bench-models stability
 
 all: build
 
@@ -265,6 +265,11 @@ bench-effects: build
 # against two (perf/thread_scaling.py, docs/scaling.md). About 3 minutes.
 bench-threads: build
 	$(PYTHON) perf/thread_scaling.py --granmc $(GRANMC)
+
+# Whole-run collisions per second on one thread against a plain scalar DSMC (perf/naive_run.cpp, Bird's scheme),
+# 10^6 and 10^7 particles, set-up included (perf/naive_ratio.py, docs/performance.md; about 12 minutes).
+bench-naive: build
+	$(PYTHON) perf/naive_ratio.py --granmc $(GRANMC) --naive $(BUILD)/bin/naive_run
 
 # What a collision costs in each model: smooth and rough spheres and disks, 10^7 particles, one thread, `granmc
 # run` wall time per collision, paired runs (perf/model_cost.py, docs/performance.md). About 4 minutes.

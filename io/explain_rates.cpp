@@ -1,7 +1,9 @@
 #include "io/explain_rates.hpp"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include <toml++/toml.h>
 
