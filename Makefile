@@ -29,7 +29,7 @@ run: build
 	$(PYTHON) drivers/plot_cooling.py results/default.h5 results/default.png
 	@echo "results: results/default.h5 results/default.json results/default.png"
 
-# Precision check of the cooling state at alpha = 0.8 (docs/validation.md).
+# Precision check of the cooling state at alpha = 0.8 (docs/methods/validation.md).
 hcs-alpha08: build
 	$(GRANMC) run drivers/scenes/hcs_alpha08.toml --out results/hcs_alpha08.h5 --summary results/hcs_alpha08.json
 	$(PYTHON) drivers/plot_cooling.py results/hcs_alpha08.h5 results/hcs_alpha08.png
@@ -40,16 +40,16 @@ hcs-disks-alpha08: build
 	$(PYTHON) drivers/plot_cooling.py results/hcs_disks_alpha08.h5 results/hcs_disks_alpha08.png
 	$(PYTHON) drivers/cooling_table.py results/hcs_disks_alpha08.h5
 
-# Rough hard disks under split white noise against the published DSMC/EDMD (docs/validation.md, "Rough particles").
+# Rough hard disks under split white noise against the published DSMC/EDMD (docs/methods/validation.md, "Rough particles").
 rough-disks-noise: build
 	$(PYTHON) drivers/rough_split_noise.py --granmc $(GRANMC)
 
-# A rough binary mixture's cooling state against the Maxwellian theory (docs/validation.md, "Rough particles").
+# A rough binary mixture's cooling state against the Maxwellian theory (docs/methods/validation.md, "Rough particles").
 rough-mixture: build
 	$(PYTHON) drivers/rough_mixture.py --granmc $(GRANMC)
 
 # Paper 000's figures (drivers/figure.py; results/000_fig<k>/figure.png, table.md). Runs are cached per
-# point: a second call only redoes the theory and the plot. Runtimes in docs/validation.md.
+# point: a second call only redoes the theory and the plot. Runtimes in docs/methods/validation.md.
 fig-000-1 fig-000-3 fig-000-4 fig-000-5 fig-000-6 fig-000-7 fig-000-8 fig-000-9 fig-000-10 fig-000-12: fig-000-%: build
 	$(PYTHON) drivers/figure.py drivers/scenes/000_fig$*/figure.toml --granmc $(GRANMC)
 
@@ -122,12 +122,12 @@ fig-002-8: build
 
 figures-002: fig-002-1 fig-002-3 fig-002-4 fig-002-5 fig-002-7 fig-002-8
 
-# Work-precision (docs/accuracy-cost.md): 001 Example 3 against particles, replicas, dt, method and storage;
+# Work-precision (docs/user-guide/accuracy-cost.md): 001 Example 3 against particles, replicas, dt, method and storage;
 # the early-time Haff slope against particles and dt; the recommendation table.
 accuracy-cost: build
 	$(PYTHON) drivers/accuracy_cost.py --granmc $(GRANMC)
 
-# Gillespie against the DSMC alternative for the 1D intruder (docs/accuracy-cost.md).
+# Gillespie against the DSMC alternative for the 1D intruder (docs/user-guide/accuracy-cost.md).
 intruder-cost: build
 	$(PYTHON) drivers/intruder_cost.py --granmc $(GRANMC)
 
@@ -147,7 +147,7 @@ relaxation-001: table-001-1 table-001-2 fig-001-3
 # Paper 001 sec. 5.3: tail exponents (drivers/tails.py, drivers/tail_fit.py). tails-001 runs Examples 7-9 at
 # n = 10^6, N = 10 (half a minute); tails-001-full at the paper's n = 10^7, N = 100 (on 2 cores, 640 MB; last
 # measured: Example 7 8 min and 9 13 min, both before later speed-ups, 8 28 min); tails-001-full-float the same with
-# 16-byte particles (330 MB: Examples 7, 8 and 9 in 7, 22 and 8 min). Measured runs in docs/performance.md.
+# 16-byte particles (330 MB: Examples 7, 8 and 9 in 7, 22 and 8 min). Measured runs in docs/developer-guide/performance.md.
 TAILS = $(PYTHON) drivers/tails.py --granmc $(GRANMC)
 tails-001: build
 	$(TAILS) drivers/scenes/001_tails/example7.toml --particles 1000000 --replicas 10
@@ -164,7 +164,7 @@ tails-001-full-float: build
 	$(TAILS) drivers/scenes/001_tails/example8.toml --storage float
 	$(TAILS) drivers/scenes/001_tails/example9.toml --storage float
 
-# The same tails with weighted particles (docs/derivations/swpm-inelastic.md): granmc fits b itself (the
+# The same tails with weighted particles (docs/methods/derivations/swpm-inelastic.md): granmc fits b itself (the
 # summary's tail.exponent); drivers/tails_weighted.py writes results/001_tails_weighted/table.md and a figure
 # per scene (f(|v|) and b against the fit window's inner edge). Any scene: the same script with its path.
 tails-001-weighted: build
@@ -179,10 +179,10 @@ tails-disks-weighted: build
 	  drivers/scenes/tails_disks_weighted/maxwell.toml drivers/scenes/tails_disks_weighted/hard_disks.toml \
 	  drivers/scenes/tails_disks_weighted/vhs.toml drivers/scenes/tails_disks_weighted/hcs_hard_disks.toml
 
-# The habits CI holds the tree to (docs/ARCHITECTURE.md, "Rules"): the lint (clang-format, pyflakes), the suite
+# The habits CI holds the tree to (docs/developer-guide/architecture.md, "Rules"): the lint (clang-format, pyflakes), the suite
 # (built with warnings as errors) at 2 OpenMP threads and again at 1 and 4, the fast tests under the address and
 # undefined-behaviour sanitizers, the SIMD tests for plain x86-64, then the MPI test in $(MPI_BUILD) (replicas
-# over ranks against one process, docs/scaling.md; installs OpenMPI if missing and builds only granmc and
+# over ranks against one process, docs/developer-guide/scaling.md; installs OpenMPI if missing and builds only granmc and
 # test_mpi there).
 test: build
 	$(MAKE) --no-print-directory lint
@@ -204,10 +204,10 @@ lint: setup
 format: setup
 	clang-format -i $(CXX_SOURCES)
 
-# docs/output-format.md, generated from the output schema (io/output_schema.cpp); test_output_format fails while
+# docs/formats/output-format.md, generated from the output schema (io/output_schema.cpp); test_output_format fails while
 # it is stale.
 output-format-page: build
-	$(GRANMC) output-format > docs/output-format.md
+	$(GRANMC) output-format > docs/formats/output-format.md
 
 # The suite again at 1 and 4 OpenMP threads (replicas over threads; results do not depend on the count:
 # test_threads compares the bits directly).
@@ -237,7 +237,7 @@ portable-test: setup
 	cmake --build $(PORTABLE_BUILD) -j $(JOBS) --target test_core test_numerics test_event_scheme
 	ctest --test-dir $(PORTABLE_BUILD) --output-on-failure -R '^(test_core|test_numerics|test_event_scheme)$$'
 
-# Replicas over MPI ranks (docs/scaling.md), built apart in $(MPI_BUILD) with GRANMC_MPI=ON: `make mpi`, then
+# Replicas over MPI ranks (docs/developer-guide/scaling.md), built apart in $(MPI_BUILD) with GRANMC_MPI=ON: `make mpi`, then
 # `mpirun -np R $(MPI_BUILD)/bin/granmc run SCENE ...`. The default set-up does not install MPI.
 mpi-setup:
 	@bash scripts/setup-deps.sh --mpi
@@ -262,21 +262,21 @@ bench-effects: build
 	cmake --build $(BUILD) --target bench-effects
 
 # Threads: one replica with its threads inside it, and replicas on threads; `granmc run` wall time, one thread
-# against two (perf/thread_scaling.py, docs/scaling.md). About 3 minutes.
+# against two (perf/thread_scaling.py, docs/developer-guide/scaling.md). About 3 minutes.
 bench-threads: build
 	$(PYTHON) perf/thread_scaling.py --granmc $(GRANMC)
 
 # Whole-run collisions per second on one thread against a plain scalar DSMC (perf/naive_run.cpp, Bird's scheme),
-# 10^6 and 10^7 particles, set-up included (perf/naive_ratio.py, docs/performance.md; about 12 minutes).
+# 10^6 and 10^7 particles, set-up included (perf/naive_ratio.py, docs/developer-guide/performance.md; about 12 minutes).
 bench-naive: build
 	$(PYTHON) perf/naive_ratio.py --granmc $(GRANMC) --naive $(BUILD)/bin/naive_run
 
 # What a collision costs in each model: smooth and rough spheres and disks, 10^7 particles, one thread, `granmc
-# run` wall time per collision, paired runs (perf/model_cost.py, docs/performance.md). About 4 minutes.
+# run` wall time per collision, paired runs (perf/model_cost.py, docs/developer-guide/performance.md). About 4 minutes.
 bench-models: build
 	$(PYTHON) perf/model_cost.py --granmc $(GRANMC)
 
-# Regression benchmarks (perf/bench_compare.py, docs/performance.md): the ratios granmc / naive,
+# Regression benchmarks (perf/bench_compare.py, docs/developer-guide/performance.md): the ratios granmc / naive,
 # granmc / packed gather-scatter limit (DSMC stage and event scheme) and effect / plain, compared with
 # perf/baselines/baseline.json; fails if one moved the wrong way by more than its threshold (10 %, or the
 # floor for that ratio in the baseline).

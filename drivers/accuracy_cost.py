@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Work-precision study on a problem with an exact answer (docs/accuracy-cost.md, `make accuracy-cost`).
+"""Work-precision study on a problem with an exact answer (docs/user-guide/accuracy-cost.md, `make accuracy-cost`).
 
 Usage: /usr/bin/python3 drivers/accuracy_cost.py [--granmc build/bin/granmc] [--out results/accuracy_cost]
                                                   [--threads 0]

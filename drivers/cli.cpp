@@ -94,12 +94,12 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
   std::string absent;
   for (const std::string& a : what.absent) absent += (absent.empty() ? "" : ", ") + a;
   if (!absent.empty()) std::printf("not compiled %s (the scene does not name them)\n", absent.c_str());
-  if (plan.spread == Spread::particles) {  // docs/scaling.md, "One system over several ranks"
+  if (plan.spread == Spread::particles) {  // docs/developer-guide/scaling.md, "One system over several ranks"
     const double n = static_cast<double>(total_particles(full_scene));
     std::printf(
         "spread       every replica is one system over %d rank(s), the replicas one after another on one "
         "thread per rank; per rank %.1f MB of particles and at most %.0f MB of candidate list; it takes "
-        "2-3x the time of one process for each replica (docs/scaling.md)\n",
+        "2-3x the time of one process for each replica (docs/developer-guide/scaling.md)\n",
         at.size, n * static_cast<double>(what.bytes_per_particle) / at.size / 1e6,
         static_cast<double>(spread_segment * spread_candidate_bytes) / 1e6);
     return exit_ok;
@@ -120,17 +120,18 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
     std::printf(
         "threads      %d replica(s) at a time, each on %d threads: the collision stage in concurrent rounds, the "
         "same bits as on one; faster for replicas of millions of particles, slower for small ones "
-        "(docs/scaling.md)\n",
+        "(docs/developer-guide/scaling.md)\n",
         what.replicas_in_flight, what.threads_per_replica);
   else if (threads > what.replicas_in_flight)
     std::printf("threads      %d replica(s) at a time, one thread each; %d thread(s) idle%s\n", what.replicas_in_flight,
                 threads - what.replicas_in_flight,
-                what.threads_inside ? " (--threads-per-replica puts them inside the replicas, docs/scaling.md)"
-                                    : " (this scheme runs a replica on one thread)");
+                what.threads_inside
+                    ? " (--threads-per-replica puts them inside the replicas, docs/developer-guide/scaling.md)"
+                    : " (this scheme runs a replica on one thread)");
   else
     std::printf("threads      %d replicas at a time, one thread each\n", what.replicas_in_flight);
-  // Threads inside a replica shorten it by a factor that depends on its size and the machine (docs/scaling.md):
-  // not counted.
+  // Threads inside a replica shorten it by a factor that depends on its size and the machine
+  // (docs/developer-guide/scaling.md): not counted.
   const double rate = measured_candidates_per_second(what.rate_class);
   const double seconds = what.candidates / (rate * what.replicas_in_flight);
   std::printf(
@@ -323,14 +324,15 @@ int cli_main(int argc, char** argv) {
 
   RunArgs run;
   CLI::App* run_cmd = app.add_subcommand("run", "Run a scene and write its results (HDF5, optional JSON summary)");
-  run_cmd->add_option("scene", run.scene, "Scene file (TOML, see docs/scenes.md)")->required();
+  run_cmd->add_option("scene", run.scene, "Scene file (TOML, see docs/formats/scenes.md)")->required();
   run_cmd->add_option("--out", run.out, "HDF5 output file (default: <scene name>.h5 in the current directory)");
   run_cmd->add_option("--summary", run.summary, "Also write the JSON summary of SCENES.md to this file");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   run_cmd
       ->add_option("--threads-per-replica", run.threads_per_replica,
                    "At most this many threads inside one replica, for threads the replicas leave over (time-stepped "
-                   "scheme: the collision stage in concurrent rounds, the same bits; default 1: docs/scaling.md)")
+                   "scheme: the collision stage in concurrent rounds, the same bits; default 1: "
+                   "docs/developer-guide/scaling.md)")
       ->check(CLI::Range(1, 4096));
   run_cmd->add_option("--seed", run.seed, "Override the scene's run.seed");
   run_cmd->add_flag("--quiet", run.quiet, "No progress line and no closing message");
@@ -338,11 +340,12 @@ int cli_main(int argc, char** argv) {
       ->add_option("--spread", run.spread,
                    "What the MPI ranks share: \"replicas\" (default: each rank runs its replicas) or \"particles\" "
                    "(each replica is one system spread over all ranks, for systems larger than one machine; "
-                   "docs/scaling.md)")
+                   "docs/developer-guide/scaling.md)")
       ->check(CLI::IsMember({"replicas", "particles"}));
-  run_cmd->add_option("--resume", run.resume,
-                      "Continue the run of this scene that a checkpoint (OUT.checkpoint) holds: only the replicas it "
-                      "lacks run, and the files are those of an uninterrupted run (docs/scenes.md, \"Checkpoints\")");
+  run_cmd->add_option(
+      "--resume", run.resume,
+      "Continue the run of this scene that a checkpoint (OUT.checkpoint) holds: only the replicas it "
+      "lacks run, and the files are those of an uninterrupted run (docs/formats/scenes.md, \"Checkpoints\")");
   run_cmd
       ->add_option("--checkpoint-every", run.checkpoint_every,
                    "Minutes between checkpoints (OUT.checkpoint: the finished replicas, and the gas schemes' ones in "
@@ -360,13 +363,15 @@ int cli_main(int argc, char** argv) {
       app.add_subcommand("sweep",
                          "Run the scenes of a sweep file one after another: one HDF5 file and JSON summary each, and "
                          "index.json; a rerun skips the scenes already done");
-  sweep_cmd->add_option("sweep", sweep.sweep, "Sweep file (TOML, see docs/scenes.md, \"Sweep files\")")->required();
+  sweep_cmd->add_option("sweep", sweep.sweep, "Sweep file (TOML, see docs/formats/scenes.md, \"Sweep files\")")
+      ->required();
   sweep_cmd->add_option("--out-dir", sweep.out_dir,
                         "Directory of the outputs and index.json (default: <sweep name>/ in the current directory)");
   sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   sweep_cmd
       ->add_option("--threads-per-replica", sweep.threads_per_replica,
-                   "As for granmc run: at most this many threads inside one replica (default 1: docs/scaling.md)")
+                   "As for granmc run: at most this many threads inside one replica (default 1: "
+                   "docs/developer-guide/scaling.md)")
       ->check(CLI::Range(1, 4096));
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress lines, no notes on skipped scenes, no closing message");
   sweep_cmd->add_flag("--keep-other-builds", sweep.keep_other_builds,
@@ -374,7 +379,8 @@ int cli_main(int argc, char** argv) {
                       "they run again");
 
   CLI::App* format_cmd = app.add_subcommand(
-      "output-format", "Print the format of the HDF5 file and the JSON summary (Markdown, docs/output-format.md)");
+      "output-format",
+      "Print the format of the HDF5 file and the JSON summary (Markdown, docs/formats/output-format.md)");
 
   std::string theory_scene;
   CLI::App* theory_cmd = app.add_subcommand("theory", "Print the theory predictions that apply to a scene (JSON)");

@@ -6,7 +6,7 @@ Usage: /usr/bin/python3 drivers/cooling_table.py RESULT.h5 [--relaxed-after COLL
 a2: per replica, the time average of a2 over the samples after COLLISIONS collisions per particle
 (default 15: a2 relaxes within a few), then the replica mean with its half-width lambda_p sqrt(Var/R)
 (001 eq. 31, lambda_p = 3.2). Haff: the largest |T/T_Haff - 1| over the samples, next to the replica CI
-and the cooling-rate model error of docs/physics.md at that time. Prints Markdown rows.
+and the cooling-rate model error of docs/methods/physics.md at that time. Prints Markdown rows.
 """
 import argparse
 import sys

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Cost of the two 1D intruder methods for the same accuracy (docs/accuracy-cost.md).
+"""Cost of the two 1D intruder methods for the same accuracy (docs/user-guide/accuracy-cost.md).
 
 Usage: /usr/bin/python3 drivers/intruder_cost.py [--granmc build/bin/granmc] [--out results/intruder_cost]
                                                   [--threads 1] [--target-ci 0.005] [--dt 0.1 1 10]

@@ -6,7 +6,8 @@
 
 int main(int argc, char** argv) {
 #ifdef GRANMC_HAVE_MPI
-  granmc::mpi::Session mpi(argc, argv);  // MPI_Init_thread here, MPI_Finalize after cli_main (docs/scaling.md)
+  granmc::mpi::Session mpi(
+      argc, argv);  // MPI_Init_thread here, MPI_Finalize after cli_main (docs/developer-guide/scaling.md)
 #endif
   return granmc::cli_main(argc, argv);
 }

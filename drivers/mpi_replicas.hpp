@@ -1,6 +1,6 @@
 #pragma once
-// Replicas over MPI ranks (built only with GRANMC_MPI=ON; docs/scaling.md). Rank k of R runs the replicas
-// r with r % R == k (RunOptions::replica_offset, replica_stride); gather_replicas then brings every
+// Replicas over MPI ranks (built only with GRANMC_MPI=ON; docs/developer-guide/scaling.md). Rank k of R runs the
+// replicas r with r % R == k (RunOptions::replica_offset, replica_stride); gather_replicas then brings every
 // ReplicaSeries to rank 0 as a byte-exact copy, in replica order, so that rank 0's RunResult is the one a
 // single process computes with the same seed (each replica depends only on (seed, replica),
 // kernel/core/philox_stream.hpp).

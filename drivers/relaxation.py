@@ -11,12 +11,12 @@ and writes OUT/table.md, OUT/figure.png and OUT/relaxation.json:
   - E_max = max_m |T_m - T(t_m)| / T(t_m) (001 eq. 35) against the exact Maxwell relaxation (001 eqs.
     16-17), the convergence factor CF (ratio of consecutive E_max), and ||V||_inf = max_m |V(t_m)| with V the
     ensemble mean of the bulk velocity;
-  - the same error against the exact law of the n-particle system, (1 - 1/n) T(t) (docs/physics.md), and
+  - the same error against the exact law of the n-particle system, (1 - 1/n) T(t) (docs/methods/physics.md), and
     the largest relative confidence half-width (lambda_p = 3.2), which bounds the statistical error;
   - E_max of 001's own estimator, T = (1/3) <|v|^2> without removing the bulk velocity (the summary's
     temperature_uncentred; the scenes keep the initial sample's mean, initial.zero_momentum = false, as 001
     step 1.2), beside its expected value from the n-particle law, (T(0) + 2 beta t - T(t)) / n above T(t)
-    (docs/physics.md, "001's temperature estimator"): the paper's Tables 1-2 measure this;
+    (docs/methods/physics.md, "001's temperature estimator"): the paper's Tables 1-2 measure this;
   - the figure: confidence bands of T(t) for each n with the exact curve (Figs. 1-2), or, for a kernel
     without an exact solution (hard spheres, Fig. 3), the mean curves for each n, of T and of 001's
     estimator (the paper's Fig. 3 plots the latter: its n = 64 curve is the highest).

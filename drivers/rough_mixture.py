@@ -8,7 +8,7 @@ the cooling state's scaled state) runs at alpha = 0.8 for each beta and dimensio
 species alone (one species at the total density); the rows at beta = -0.5 run LONG times the scene's t_end. For
 each run: T_1 / T_2 and theta_i = T_rot,i / T_i, each the per-replica average over the last half of the samples,
 then the replica mean and its confidence half-width (the summary's `temperature_ratio` and `rotational_ratio`),
-beside the Maxwellian approximation (docs/derivations/rough-hcs.md, "Mixtures") and the deviation from it in per
+beside the Maxwellian approximation (docs/methods/derivations/rough-hcs.md, "Mixtures") and the deviation from it in per
 cent. Then the same scenes heated by white noise on translation (beta_wn = 1) instead of the thermostat: white
 noise acts after the collisions (a first-order splitting), so each runs at DT and DT / 2 and the values are taken
 at dt -> 0 per replica (2 x(dt/2) - x(dt)), as drivers/rough_split_noise.py does. Writes OUT/table.md.

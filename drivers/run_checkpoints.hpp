@@ -1,5 +1,5 @@
 #pragma once
-// Checkpoints of `granmc run` (docs/scenes.md, "Checkpoints"; io/checkpoint.hpp): the finished replicas, and
+// Checkpoints of `granmc run` (docs/formats/scenes.md, "Checkpoints"; io/checkpoint.hpp): the finished replicas, and
 // the gas schemes' replicas in flight at a sample time, are written to OUT.checkpoint beside the HDF5
 // output every `every_minutes` of wall-clock time (0: at every sample and every finished replica) and when
 // SIGINT or SIGTERM arrives; then the run ends (exit status 3) and says how to resume. `--resume FILE` goes on

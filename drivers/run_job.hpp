@@ -1,7 +1,7 @@
 #pragma once
 // One scene run as `granmc run` runs it, shared by `granmc run` and `granmc sweep`: the replicas spread over
-// the MPI ranks (replica r on rank r mod R, docs/scaling.md), gathered byte-exact to rank 0, which alone
-// makes the report and writes the HDF5 file and the JSON summary (temporary name, then rename). Without MPI
+// the MPI ranks (replica r on rank r mod R, docs/developer-guide/scaling.md), gathered byte-exact to rank 0, which
+// alone makes the report and writes the HDF5 file and the JSON summary (temporary name, then rename). Without MPI
 // (GRANMC_MPI=OFF) there is one process, rank 0 of 1, and nothing here is collective.
 #include <exception>
 #include <string>

@@ -8,7 +8,7 @@ and its summary (the headline figures): every reported temperature finite
 and positive; for gases, the total momentum at rounding level (|P| / sqrt(M 2E) < 1e-10) unless white
 noise drives it (001 Remark 1: then it is reported); with the Gaussian thermostat compensating the cooling
 (and no shear) T(t) = T(0) to 1e-9; for the time-stepped gas the energy bookkeeping against a direct sum
-to 1e-10 (docs/physics.md, "Energy balance"); under shear P_xy < 0 and finite; the event scheme's majorant
+to 1e-10 (docs/methods/physics.md, "Energy balance"); under shear P_xy < 0 and finite; the event scheme's majorant
 violations reported; the needle's bisection fallbacks reported. Writes OUT/table.md and exits 1 if a check
 fails. The fast versions of the same cases are `ctest -L stability`.
 """

@@ -23,7 +23,7 @@ def main():
     p.add_argument("--particles", type=int, default=None)
     p.add_argument("--replicas", type=int, default=None)
     p.add_argument("--storage", choices=["double", "float"], default=None,
-                   help="run.storage: float halves the memory (docs/scenes.md, docs/accuracy-cost.md)")
+                   help="run.storage: float halves the memory (docs/formats/scenes.md, docs/user-guide/accuracy-cost.md)")
     p.add_argument("--out", default=None)
     p.add_argument("--granmc", default="build/bin/granmc")
     p.add_argument("--threads", type=int, default=0)

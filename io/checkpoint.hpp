@@ -1,5 +1,5 @@
 #pragma once
-// A checkpoint of a run (`granmc run --checkpoint-every`, `--resume`; docs/scenes.md, "Checkpoints"): the
+// A checkpoint of a run (`granmc run --checkpoint-every`, `--resume`; docs/formats/scenes.md, "Checkpoints"): the
 // series of the replicas that have finished and the state of those stopped at a sample time (the
 // time-stepped and time-step-free schemes', kernel/schemes/replica_in_flight.hpp), with what identifies the run they
 // belong to (the build, the scene text, the seed, the number of replicas). Each replica depends only on (seed, replica)

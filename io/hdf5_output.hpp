@@ -1,6 +1,6 @@
 #pragma once
 // The HDF5 result file of a run: every record of the output schema (io/output_schema.hpp) that the run has,
-// laid out as docs/output-format.md describes (generated from the same declarations).
+// laid out as docs/formats/output-format.md describes (generated from the same declarations).
 #include <string>
 
 #include "kernel/analysis/run_report.hpp"

@@ -85,7 +85,7 @@ std::vector<OutputRecord> declare() {
   const InSummary S = InSummary::yes, H = InSummary::no, ST = InSummary::sample_times;
 
   // The run as a whole.
-  add("format_version", K::text, S, "", "version of this format, major.minor (docs/output-format.md)",
+  add("format_version", K::text, S, "", "version of this format, major.minor (docs/formats/output-format.md)",
       [](const RunOutput&, std::size_t) { return output_format_version(); });
   add("scene", K::text, S, "", "the scene file's path as given to granmc",
       [](const RunOutput& o, std::size_t) { return o.scene.source_path; });
@@ -109,7 +109,8 @@ std::vector<OutputRecord> declare() {
   add("threads", K::count, S, "", "OpenMP threads (of rank 0 over MPI)",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.threads); });
   add("threads_per_replica", K::count, S, "",
-      "of the threads, each replica's own: the time-stepped scheme's concurrent collision rounds (docs/scaling.md)",
+      "of the threads, each replica's own: the time-stepped scheme's concurrent collision rounds "
+      "(docs/developer-guide/scaling.md)",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.threads_per_replica); });
   // The concurrent rounds' counts (observe/gas_series.hpp), present when the replicas had threads inside them.
   const auto round_count = [](std::uint64_t CollisionRoundCounts::*count) {
@@ -635,10 +636,11 @@ std::vector<OutputRecord> declare() {
         });
   }
 
-  // Theory beside the results: the monodisperse hard-sphere cooling state (docs/physics.md).
+  // Theory beside the results: the monodisperse hard-sphere cooling state (docs/methods/physics.md).
   using Prediction = theory::CoolingStatePrediction;
   add("theory", K::group, H, "",
-      "monodisperse hard-sphere homogeneous cooling state: Haff's law, first- and second-Sonine a2 (docs/physics.md)",
+      "monodisperse hard-sphere homogeneous cooling state: Haff's law, first- and second-Sonine a2 "
+      "(docs/methods/physics.md)",
       [](const RunOutput& o, std::size_t) -> Value {
         if (!o.report.theory) return {};
         return std::monostate{};
@@ -653,14 +655,15 @@ std::vector<OutputRecord> declare() {
   prediction("alpha", "", "restitution alpha", &Prediction::alpha);
   prediction("chi", "", "Enskog pair correlation at contact chi (1 in the Boltzmann limit)", &Prediction::chi);
   prediction("a2", "", "first-Sonine a2 of the cooling state", &Prediction::a2);
-  prediction("a2_model_error", "", "model error of the first-Sonine a2 (docs/physics.md)", &Prediction::a2_model_error);
+  prediction("a2_model_error", "", "model error of the first-Sonine a2 (docs/methods/physics.md)",
+             &Prediction::a2_model_error);
   prediction("a2_second_sonine", "", "second-Sonine a2", &Prediction::a2_second_sonine);
   prediction("a3_second_sonine", "", "second-Sonine a3", &Prediction::a3_second_sonine);
   prediction("cooling_rate0", "1/time", "cooling rate zeta0 at t = 0 (second Sonine)", &Prediction::cooling_rate0);
   prediction("cooling_rate0_first_sonine", "1/time", "zeta0 with the first-Sonine a2",
              &Prediction::cooling_rate0_first_sonine);
   prediction("cooling_rate0_maxwell", "1/time", "zeta0 of a Maxwellian (a2 = 0)", &Prediction::cooling_rate0_maxwell);
-  prediction("cooling_rate_model_error", "", "relative model error of zeta0 (docs/physics.md)",
+  prediction("cooling_rate_model_error", "", "relative model error of zeta0 (docs/methods/physics.md)",
              &Prediction::cooling_rate_model_error);
   prediction("collision_frequency0", "1/time", "collision frequency at t = 0", &Prediction::collision_frequency0);
   add("theory/haff_temperature", K::numbers, ST, "energy",

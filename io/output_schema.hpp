@@ -2,7 +2,7 @@
 // The output schema: every record a run writes, declared once. A record has a
 // path ("temperature", "species/{species}/a2", "intruder/R"), a kind, units, a meaning and how to read its
 // value from a finished run. The HDF5 writer (io/hdf5_output.cpp), the JSON summary (io/summary_json.cpp)
-// and the format page (`granmc output-format`, docs/output-format.md) are driven by these declarations, so
+// and the format page (`granmc output-format`, docs/formats/output-format.md) are driven by these declarations, so
 // a record has the same name in the HDF5 file and in the summary, and a new record is one declaration.
 //
 // How each kind is stored:
@@ -94,7 +94,7 @@ const std::vector<std::string>& machine_records();
 /// The HDF5 group name of species i: its name, with '/' replaced (the name itself is the attribute "name").
 std::string species_group_name(const std::string& name, std::size_t index);
 
-/// The Markdown page of the format (docs/output-format.md): one table row per record.
+/// The Markdown page of the format (docs/formats/output-format.md): one table row per record.
 std::string output_format_page();
 
 }  // namespace granmc

@@ -251,7 +251,7 @@ void check_text(std::string_view text, const std::string& path) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     throw SceneError(path +
                      ": the file is empty; a scene needs at least a [run] table with t_end "
-                     "(see docs/scenes.md)");
+                     "(see docs/formats/scenes.md)");
   }
   if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
     const auto [line, col] = line_column(text, nul);
@@ -709,7 +709,7 @@ void Reader::read_collision(const Section& s, Scene& scene) const {
   if (const auto phi = number(s, "packing_fraction", "a number in [0, 1)"))
     c.packing_fraction = unit_half_open(s.key("packing_fraction"), *phi);
 
-  // Rough particles (docs/derivations/rough-hcs.md): beta = -1 is the smooth gas.
+  // Rough particles (docs/methods/derivations/rough-hcs.md): beta = -1 is the smooth gas.
   if (const auto beta = number(s, "tangential_restitution", "a number in [-1, 1]")) {
     if (!(*beta >= -1.0 && *beta <= 1.0))
       fail(s.key("tangential_restitution"),

@@ -1,6 +1,6 @@
 #pragma once
 // The JSON summary of a run (`granmc run --summary FILE.json`): the records of the output schema marked for
-// the summary (io/output_schema.hpp, docs/output-format.md), under the names they have in the HDF5 file. The
+// the summary (io/output_schema.hpp, docs/formats/output-format.md), under the names they have in the HDF5 file. The
 // names SCENES.md fixes ("Summary": scene, seed, replicas, method, wall_seconds, collisions, times,
 // temperature, species [{name, temperature, a2}], temperature_ratio, viscosity, intruder) are among them.
 //

@@ -146,7 +146,7 @@ void flatten(const toml::table& t, const std::string& prefix,
 
 std::vector<Step> key_steps(const std::string& key, const std::string& where) {
   const std::string bad = where +
-                          ": not a scene key; write table.key as in docs/scenes.md, with [i] to choose one "
+                          ": not a scene key; write table.key as in docs/formats/scenes.md, with [i] to choose one "
                           "of several tables (collision.restitution, species[1].mass)";
   std::vector<Step> steps;
   std::size_t at = 0;
@@ -244,7 +244,7 @@ std::string read_sweep_text(const std::string& path) {
   return buf.str();
 }
 
-constexpr std::string_view kAllowed = "allowed keys: base, grid, scenes (docs/scenes.md, \"Sweep files\")";
+constexpr std::string_view kAllowed = "allowed keys: base, grid, scenes (docs/formats/scenes.md, \"Sweep files\")";
 
 /// The scenes' settings from [grid] (every combination, the first key varying slowest) or [[scenes]].
 std::vector<std::vector<Setting>> read_settings(const toml::table& root, const std::string& path) {

@@ -1,7 +1,7 @@
 #pragma once
 // Sweep files: a base scene and the values to set in it, either a grid (every combination of the listed
 // values) or a list (one set of values per scene), -> the scenes of the sweep, each checked as a scene file
-// is. The format is documented in docs/scenes.md ("Sweep files"); `granmc sweep` (drivers/sweep.cpp) runs
+// is. The format is documented in docs/formats/scenes.md ("Sweep files"); `granmc sweep` (drivers/sweep.cpp) runs
 // the result.
 #include <stdexcept>
 #include <string>

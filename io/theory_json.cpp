@@ -40,9 +40,9 @@ void add_cooling_state(const Scene& scene, const std::vector<double>& times, nlo
   if (const auto hcs = theory::cooling_state(scene, times)) {
     applies.push_back(scene.run.dimension == 2
                           ? "homogeneous cooling state, monodisperse hard disks: Haff's law, Sonine "
-                            "a2 (docs/derivations/sonine-hcs.md, \"Hard disks\")"
+                            "a2 (docs/methods/derivations/sonine-hcs.md, \"Hard disks\")"
                           : "homogeneous cooling state, monodisperse hard spheres: Haff's law, "
-                            "Sonine a2 (docs/physics.md)");
+                            "Sonine a2 (docs/methods/physics.md)");
     j["times"] = times;
     j["cooling_state"] = cooling_state_json(*hcs);
   }
@@ -65,7 +65,7 @@ void add_mixture(const Scene& scene, const std::vector<double>& /*times*/, nlohm
   const auto m = theory::mixture_state(scene);
   if (!m) return;
   applies.push_back(std::string("binary mixture") + (scene.run.dimension == 2 ? " of disks" : "") +
-                    ", HCS or HSS: temperature ratio and a2_i (docs/derivations/mixture-hcs.md)");
+                    ", HCS or HSS: temperature ratio and a2_i (docs/methods/derivations/mixture-hcs.md)");
   j["mixture"] = {{"temperature_ratio_maxwell", m->temperature_ratio_maxwell},
                   {"temperature_ratio_sonine", m->first_sonine.gamma},
                   {"a2_sonine", {m->first_sonine.a2[0], m->first_sonine.a2[1]}}};
@@ -110,7 +110,7 @@ void add_kernel_form(const Scene& scene, const std::vector<double>& times, nlohm
     if (lambda == 0.0) {
       applies.push_back(
           "Maxwell pseudomolecules: exact temperature relaxation (001 eqs. 16-17; |S^(d-1)| rate (1 - alpha^2) / 4 "
-          "in d dimensions), and (1 - 1/n) times it for the n-particle system (docs/physics.md)");
+          "in d dimensions), and (1 - 1/n) times it for the n-particle system (docs/methods/physics.md)");
       const double n = static_cast<double>(scene.species[0].particles);
       std::vector<double> exact, particles, uncentred;
       for (double t : times) {
@@ -251,9 +251,9 @@ void add_viscosity(const Scene& scene, const std::vector<double>& /*times*/, nlo
     }
     if (d == 2 && !v.contains("first_sonine")) return;  // disk mixtures: no viscosity theory
     applies.push_back(d == 2 ? "uniform shear flow, hard disks: first-Sonine Navier-Stokes shear viscosity in d = 2, "
-                               "dilute or Enskog (docs/derivations/viscosity.md, \"Disks\")"
+                               "dilute or Enskog (docs/methods/derivations/viscosity.md, \"Disks\")"
                              : "uniform shear flow, hard spheres: first-Sonine Navier-Stokes shear viscosity (003; "
-                               "mixtures docs/derivations/viscosity.md)");
+                               "mixtures docs/methods/derivations/viscosity.md)");
     j["viscosity"] = v;
   }
 }
@@ -285,7 +285,7 @@ void add_steady_shear(const Scene& scene, const std::vector<double>& /*times*/, 
 }
 
 /// Rough hard spheres or disks, one or two species: theta = T_r / T and the cooling rate of the cooling state,
-/// or theta under white noise; for two species theta of each and T_1 / T_2 (docs/derivations/rough-hcs.md).
+/// or theta under white noise; for two species theta of each and T_1 / T_2 (docs/methods/derivations/rough-hcs.md).
 void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohmann::json& j, nlohmann::json& applies) {
   if (scene.collision.kernel != CollisionKernel::hard_sphere || scene.shear_rate != 0.0) return;
   const CollisionConfig& c = scene.collision;
@@ -305,7 +305,7 @@ void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohman
   };
   if (scene.thermostat.kind != ThermostatKind::white_noise) {
     // The Gaussian thermostat scales translation and spins alike, so its steady state is the cooling state's
-    // in scaled variables (docs/physics.md, "Rough particles").
+    // in scaled variables (docs/methods/physics.md, "Rough particles").
     if (mixture) {
       try {
         const theory::RoughMixtureState s = theory::rough_mixture_hcs(m);
@@ -319,9 +319,10 @@ void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohman
       r["theta_hcs"] = theta;
       r["cooling_rate_over_nu_hcs"] = theory::rough_cooling_rates(alpha, beta, kappa, theta, d).translation;
     }
-    const std::string what = mixture ? "T_rot / T_tr of each species and T_1 / T_2 (docs/derivations/rough-hcs.md)"
-                                     : "T_rot / T_tr and the cooling rate (Huthmann and Zippelius 1997; "
-                                       "docs/derivations/rough-hcs.md)";
+    const std::string what = mixture
+                                 ? "T_rot / T_tr of each species and T_1 / T_2 (docs/methods/derivations/rough-hcs.md)"
+                                 : "T_rot / T_tr and the cooling rate (Huthmann and Zippelius 1997; "
+                                   "docs/methods/derivations/rough-hcs.md)";
     applies.push_back("homogeneous cooling state (or its scaled state under the Gaussian thermostat), " + particles +
                       ", Maxwellian approximation: " + what);
   } else {
@@ -341,7 +342,7 @@ void add_rough(const Scene& scene, const std::vector<double>& /*times*/, nlohman
     applies.push_back(
         std::string(share > 0.0 ? "white noise split between translation and rotation" : "white noise on translation") +
         ", " + particles + ", Maxwellian approximation: the steady T_rot / T_tr" +
-        (mixture ? " of each species and T_1 / T_2" : "") + " (docs/derivations/rough-hcs.md)");
+        (mixture ? " of each species and T_1 / T_2" : "") + " (docs/methods/derivations/rough-hcs.md)");
   }
   j["rough"] = r;
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regression check of the benchmark suite by ratios (docs/performance.md, Regression benchmarks).
+"""Regression check of the benchmark suite by ratios (docs/developer-guide/performance.md, Regression benchmarks).
 
 Usage: /usr/bin/python3 perf/bench_compare.py [--bin build/bin] [--save] [--threshold 0.10] [--rounds K]
                         [--repetitions R] [--json-dir DIR] [--from-json DIR] [--baseline FILE] [--self-test]
@@ -82,7 +82,7 @@ ROUND = (
 DEFAULT_THRESHOLD = 0.10
 # Per-ratio thresholds (floors; keys are names or fnmatch patterns) written into a new baseline, which keeps
 # those of the baseline it replaces. Set from the spread between rounds measured on the project machine under
-# load 4-5.5 on its 2 vCPUs, for the median of 3 rounds against the median of 5 (docs/performance.md,
+# load 4-5.5 on its 2 vCPUs, for the median of 3 rounds against the median of 5 (docs/developer-guide/performance.md,
 # Regression benchmarks): about the 95th percentile of the change the wrong way with nothing changed.
 DEFAULT_RATIO_THRESHOLDS = {
     "granmc_over_naive/1e7": 0.40,
@@ -354,7 +354,7 @@ def make_baseline(rounds, ratios, old=None, threshold=None, commit=None):
                     binaries[exe] = datetime.datetime.fromtimestamp(
                         os.path.getmtime(exe), datetime.timezone.utc).isoformat(timespec="seconds")
     return {
-        "what": "perf/bench_compare.py baseline: ratios of medians within one run (docs/performance.md, "
+        "what": "perf/bench_compare.py baseline: ratios of medians within one run (docs/developer-guide/performance.md, "
                 "Regression benchmarks)",
         "date": measured or written,  # of the first benchmark run (the context of its JSON)
         "written": written,

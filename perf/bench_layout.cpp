@@ -10,7 +10,7 @@
 //
 // Besides the two plain loops, two "prefetch" variants generate the pairs kPrefetchDistance ahead
 // and prefetch their cache lines (2 for packed, 6 for SoA): not part of the layout decision, but the
-// figure for the batching-with-prefetch that docs/performance.md discusses.
+// figure for the batching-with-prefetch that docs/developer-guide/performance.md discusses.
 //
 // Counter (rate over CPU time): pairs/s. A table of the medians and the ratios follows the runs.
 // Defaults: 3 repetitions, aggregates only, min time 0.5 s; any --benchmark_* flag overrides them.

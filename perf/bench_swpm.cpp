@@ -27,8 +27,8 @@
 // (the weight transfer) and touched heavy particles are split, until the count reaches growth = 2 times
 // its value after the last control and the control runs again. So the count at a slice end (counter
 // particles, and the event N) is the sawtooth's low end, what a sample sees; averaged over time the weighted
-// gas holds about 15 % more (docs/performance.md). The event scheme's rates hardly depend on N at this size
-// (bench_event's event_maxwell runs as fast at 10^5), so the ratios do not hang on which count is taken.
+// gas holds about 15 % more (docs/developer-guide/performance.md). The event scheme's rates hardly depend on N at this
+// size (bench_event's event_maxwell runs as fast at 10^5), so the ratios do not hang on which count is taken.
 //
 // Counters (rates over CPU time): candidates/s, collisions/s (real collisions, the tally's difference over
 // the timed loop; for the weighted gas a collision of unequal weights is one collision, whatever weight it

@@ -16,7 +16,7 @@
 //
 // Both count candidates, real collisions, violations (|v_i - v_j| above the pair's bound: such a
 // candidate collides) and T(0.25); the second also counts particles found above their own bound and the
-// selection draws. docs/performance.md ("Per-particle bounds under white noise") has the table and the
+// selection draws. docs/developer-guide/performance.md ("Per-particle bounds under white noise") has the table and the
 // commands; `majorant_study --help` lists the options.
 //
 // With --costs it times instead, on n particles in granmc's 16-byte float records, what such a scheme

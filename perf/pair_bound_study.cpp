@@ -1,6 +1,6 @@
 // What a pair-dependent majorant would buy the time-stepped DSMC of hard spheres (a study, not granmc's
-// scheme). An elastic hard-sphere gas (the scaling scenes of docs/scaling.md) from a Maxwellian at T = 1,
-// in granmc's packed records (x, y, z, aux), runs the same steps two ways, one candidate after the other:
+// scheme). An elastic hard-sphere gas (the scaling scenes of docs/developer-guide/scaling.md) from a Maxwellian at T =
+// 1, in granmc's packed records (x, y, z, aux), runs the same steps two ways, one candidate after the other:
 //
 //  - the paper's majorant (000 sec. 3), as granmc's collision stage: C = c N (N - 1) / 2 U candidates per
 //    step, k and l uniform, real with probability |v_k - v_l| / U, U raised when exceeded; U starts at
@@ -18,7 +18,7 @@
 // collisions (nu dt = 0.1). Output per n: candidates and selection draws per collision, the collisions
 // per step and per particle (the same law: equal within noise), and ns per collision (wall time of
 // `steps` steps, the fastest of `passes` runs; std::chrono, indicative only on a shared host).
-// docs/performance.md ("A pair-dependent majorant for the time-stepped scheme") has the table and the
+// docs/developer-guide/performance.md ("A pair-dependent majorant for the time-stepped scheme") has the table and the
 // commands; `pair_bound_study --help` lists the options.
 #include <algorithm>
 #include <bit>

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The paired ratios of bench_effects over several processes (docs/performance.md, effects).
+"""The paired ratios of bench_effects over several processes (docs/developer-guide/performance.md, effects).
 
 Usage: /usr/bin/python3 perf/paired_processes.py [--bin build/bin] [--processes K] [--scenes REGEX]
                                                   [--paired-rounds R] [--one-at-a-time]
@@ -20,7 +20,7 @@ scene), not all scenes in one process. In processes holding all ten gases of ben
 plain scene measured slow against scenes that run the identical code (11 processes: median
 ratio to plain 0.98 for enskog_chi, 0.95 for the Gaussian thermostat's one log1p per step, plain /
 hand-specialised 1.10), and not with one other gas per process (0.97-1.04 and 1.02), for a reason not
-found; so the ratios in docs/performance.md are measured one scene at a time.
+found; so the ratios in docs/developer-guide/performance.md are measured one scene at a time.
 """
 import argparse
 import math

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Wall time of `granmc run` on one thread and on two, for the tables of docs/scaling.md ("Threads inside one
+"""Wall time of `granmc run` on one thread and on two, for the tables of docs/developer-guide/scaling.md ("Threads inside one
 replica"): one replica of 10^7, 10^6 and 10^5 particles with its two threads inside it (--threads-per-replica
 2), and two replicas of 10^7 and of 10^6 with one thread each.
 

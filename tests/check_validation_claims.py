@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Every agreement claim of docs/validation.md, checked against the table it describes.
+"""Every agreement claim of docs/methods/validation.md, checked against the table it describes.
 
-Usage: /usr/bin/python3 tests/check_validation_claims.py [--doc docs/validation.md]
+Usage: /usr/bin/python3 tests/check_validation_claims.py [--doc docs/methods/validation.md]
            [--claims tests/validation_claims.toml]
 
 The claims file lists each claim as it is written (its `quote`, found in its `section`) with the table it
@@ -205,7 +205,7 @@ def unchecked_phrases(sections, registered):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--doc", default="docs/validation.md")
+    p.add_argument("--doc", default="docs/methods/validation.md")
     p.add_argument("--claims", default="tests/validation_claims.toml")
     args = p.parse_args()
     sections = read_sections(args.doc)

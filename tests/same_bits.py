@@ -142,7 +142,7 @@ def main():
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--threads-per-replica", type=int, default=1,
                    help="the candidate's threads inside a replica (granmc sweep --threads-per-replica; the "
-                   "time-stepped scheme's concurrent collision rounds, docs/scaling.md)")
+                   "time-stepped scheme's concurrent collision rounds, docs/developer-guide/scaling.md)")
     p.add_argument("--work", help="keep the files here (default: a temporary directory); the reference build's "
                    "files found there from the same sweep are reused")
     p.add_argument("--files", nargs=2, metavar="H5", help="compare two existing files instead")

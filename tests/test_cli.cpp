@@ -108,8 +108,9 @@ TEST_F(Cli, TheoryPrintsJsonForTheScene) {
   EXPECT_NE(o.stdout_text.find("\"a2_second_sonine\""), std::string::npos);
 }
 
-/// A gas of hard disks (run.dimension = 2): `granmc theory` gives its cooling state (docs/derivations/sonine-hcs.md,
-/// "Hard disks"), and `granmc run` refuses it, naming the key, with nothing written.
+/// A gas of hard disks (run.dimension = 2): `granmc theory` gives its cooling state
+/// (docs/methods/derivations/sonine-hcs.md, "Hard disks"), and `granmc run` refuses it, naming the key, with nothing
+/// written.
 TEST_F(Cli, HardDisksHaveTheirTheoryAndRun) {
   write("disks.toml", with("dt = 0.01", "dt = 0.01\ndimension = 2"));
   const Outcome o = granmc("theory disks.toml");
@@ -141,7 +142,7 @@ TEST_F(Cli, HardDisksHaveTheirTheoryAndRun) {
 }
 
 /// White noise on hard cores: `granmc theory` gives the first- and second-Sonine a2 (and a3) of the heated
-/// state (docs/derivations/sonine-hcs.md, "White noise"), the same for the hard disks of 000's form and of
+/// state (docs/methods/derivations/sonine-hcs.md, "White noise"), the same for the hard disks of 000's form and of
 /// 001's kernel form, with the first Sonine's model error their distance; and so for VHS.
 TEST_F(Cli, WhiteNoiseHardCoresHaveTheirSecondSonine) {
   const std::string scenes = std::string(GRANMC_SOURCE_DIR) + "/drivers/scenes/white_noise/";
@@ -155,10 +156,10 @@ TEST_F(Cli, WhiteNoiseHardCoresHaveTheirSecondSonine) {
     EXPECT_EQ(a[key], b[key]) << key;
   const double first = a["a2"], second = a["a2_second_sonine"];
   EXPECT_EQ(a["a2_model_error"].get<double>(), std::fabs(second - first));
-  EXPECT_NEAR(second, 0.03452, 5e-6);  // alpha = 1/2, d = 2: docs/derivations/sonine-hcs.md's table
+  EXPECT_NEAR(second, 0.03452, 5e-6);  // alpha = 1/2, d = 2: docs/methods/derivations/sonine-hcs.md's table
   EXPECT_NEAR(a["a3_second_sonine"].get<double>(), -0.00550, 5e-6);
   // VHS spheres (e uniform, lambda = 1/2): the isotropic kernels' second Sonine
-  // (docs/derivations/vhs-white-noise-a2.md)
+  // (docs/methods/derivations/vhs-white-noise-a2.md)
   const Outcome vhs = granmc("theory " + scenes + "event_vhs.toml");
   ASSERT_EQ(vhs.status, 0) << vhs.stderr_text;
   const nlohmann::json v = nlohmann::json::parse(vhs.stdout_text)["white_noise"];
@@ -331,7 +332,8 @@ TEST_F(Cli, UnsupportedCombinationExitsTwoSayingWhatIsSupported) {
   EXPECT_TRUE(outputs().empty());
 }
 
-TEST_F(Cli, SpreadParticlesRunsOrSaysWhatItSupports) {  // docs/scaling.md, "One system over several ranks"
+TEST_F(Cli,
+       SpreadParticlesRunsOrSaysWhatItSupports) {  // docs/developer-guide/scaling.md, "One system over several ranks"
   write("good.toml", good_scene);
   const Outcome ok = granmc("run good.toml --spread particles --out s.h5 --summary s.json");
   EXPECT_EQ(ok.status, 0) << ok.stderr_text;

@@ -1,7 +1,7 @@
 // The homogeneous cooling state of monodisperse inelastic hard spheres and hard disks (alpha = 0.8) against
 // theory: Haff's law with the first-Sonine cooling rate, and the Sonine a2, in d = 3 and d = 2. Tolerance:
 // the replica confidence half-width (001 eq. 31) plus the documented model error of the theory
-// (docs/physics.md, "Model error of the Sonine predictions"). The sphere scene with float storage
+// (docs/methods/physics.md, "Model error of the Sonine predictions"). The sphere scene with float storage
 // (run.storage) cools as the double one does: the paired difference of each replica (same seed) is zero
 // within its CI.
 #include <algorithm>
@@ -95,7 +95,7 @@ INSTANTIATE_TEST_SUITE_P(SpheresAndDisks, CoolingState, ::testing::Values(3, 2),
 TEST_P(CoolingState, HaffLawWithinConfidenceAndSonineError) {
   const CoolingRun& c = cooling_run(GetParam());
   // A relative error delta of the cooling rate moves T(t) by at most 2 delta x / (1 + x), x = zeta0 t / 2
-  // (docs/physics.md); delta bounds the start from a Maxwellian and the Sonine truncation.
+  // (docs/methods/physics.md); delta bounds the start from a Maxwellian and the Sonine truncation.
   const double delta = c.theory.cooling_rate_model_error;
   for (std::size_t k = 0; k < c.result.times.size(); ++k) {
     std::vector<double> ratio;

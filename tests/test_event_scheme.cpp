@@ -1,6 +1,6 @@
 // The time-step-free white-noise scheme (001 sec. 4) against what is exact:
 //  - Maxwell pseudomolecules: the expected bulk-subtracted temperature of n particles is (1 - 1/n) times
-//    the Boltzmann relaxation of 001 eqs. (16-17) (docs/physics.md), heating (Example 3) and cooling
+//    the Boltzmann relaxation of 001 eqs. (16-17) (docs/methods/physics.md), heating (Example 3) and cooling
 //    (Example 4) alike, spheres and disks; the 1/n offset is resolved, not hidden in the tolerance; the
 //    steady a2 of heated Maxwell disks is the exact one;
 //  - elastic gases in equilibrium: the real-collision rate is |S^(d-1)| / 2 rate (n - 1) <|u|^lambda>, which
@@ -151,7 +151,7 @@ MeanCI late_a2(const RunResult& r, double from) {
 TEST(EventScheme, MaxwellDisksReachTheExactSteadyA2) {
   // Example 3 in the plane run to its steady state (kappa t_end = 15): a2 averaged over the samples from t = 20
   // on is the exact 6 (1 - alpha)^2 (1 + alpha) / (33 - 25 alpha + 3 alpha^2 - 3 alpha^3) = 18/167 of
-  // docs/derivations/maxwell-white-noise-a2.md. The n-particle system's a2 differs from the Boltzmann one by
+  // docs/methods/derivations/maxwell-white-noise-a2.md. The n-particle system's a2 differs from the Boltzmann one by
   // O(1/n) = 5e-4, a fifth of the CI.
   Scene s = example(1.0, 2000, 400, "double", 2);
   s.run.t_end = 40.0;
@@ -166,8 +166,9 @@ TEST(EventScheme, MaxwellDisksReachTheExactSteadyA2) {
 
 TEST(EventScheme, VhsDisksReachTheFirstSonineA2) {
   // VHS disks (lambda = 1/2, e uniform on the circle) heated by white noise: the steady a2 over t in [10, 20] against
-  // the first-Sonine a2 of the isotropic kernels, 448/7365 at alpha = 1/2 (docs/derivations/vhs-white-noise-a2.md).
-  // Its model error is the second Sonine's shift, 0.00126 (the same page, "Second Sonine").
+  // the first-Sonine a2 of the isotropic kernels, 448/7365 at alpha = 1/2
+  // (docs/methods/derivations/vhs-white-noise-a2.md). Its model error is the second Sonine's shift, 0.00126 (the same
+  // page, "Second Sonine").
   constexpr std::string_view text = R"(
     [run]
     method = "event"
@@ -209,7 +210,7 @@ TEST(EventScheme, MaxwellWithoutNoiseCoolsExponentially) {
 /// 001's estimator (1/3) <|v|^2>, the bulk velocity not removed (the report's temperature_uncentred), on a
 /// sample drawn as 001 step 1.2 draws it (initial.zero_momentum = false) and on one with its mean removed:
 /// at every sample within the CI of its exact n-particle law (1 - 1/n) T(t) + (T0 [kept mean] + 2 beta t)/n
-/// (docs/physics.md, "001's temperature estimator"), which gives 001 Tables 1-2 their E_max.
+/// (docs/methods/physics.md, "001's temperature estimator"), which gives 001 Tables 1-2 their E_max.
 void check_uncentred_estimator(double beta, bool zero_momentum, double ci_bound) {
   Scene s = example(beta, 64, 2000);
   s.initial_zero_momentum = zero_momentum;

@@ -128,7 +128,7 @@ TEST(GaussianThermostat, HeatedStateEqualsCoolingStateInScaledVariables) {
   EXPECT_TRUE(within_ci("gamma, HCS against HSS", ga.mean, ga.ci + gb.ci, gb.mean, 0.0135));
   EXPECT_GT(std::fabs(ga.mean - 1.0), 5 * ga.ci);  // non-equipartition is resolved, so the check has teeth
   // Both against the first-Sonine gamma; its model error is taken as the size of its own correction to
-  // the Maxwellian gamma (docs/physics.md).
+  // the Maxwellian gamma (docs/methods/physics.md).
   const auto theory = theory::mixture_state(hss);
   const double model = std::fabs(theory->first_sonine.gamma - theory->temperature_ratio_maxwell);
   std::printf("[ measured ] gamma theory: Sonine %.4f, Maxwell %.4f\n", theory->first_sonine.gamma,

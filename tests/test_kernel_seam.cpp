@@ -1,8 +1,8 @@
-// The seam a new collision kernel goes through (docs/ARCHITECTURE.md, "Adding a kernel"): a kernel is one
-// struct with the time-stepped and the event face of collide/collision_kernel.hpp. This test writes Maxwell's
-// law again as a new kernel would be written, outside the library, and runs it through the one time stepper
-// and the event scheme: both give the bits of the library's MaxwellPseudomolecules. A kernel that misses a
-// member of either face fails the static_asserts below at compile time.
+// The seam a new collision kernel goes through (docs/developer-guide/architecture.md, "Adding a kernel"): a kernel is
+// one struct with the time-stepped and the event face of collide/collision_kernel.hpp. This test writes Maxwell's law
+// again as a new kernel would be written, outside the library, and runs it through the one time stepper and the event
+// scheme: both give the bits of the library's MaxwellPseudomolecules. A kernel that misses a member of either face
+// fails the static_asserts below at compile time.
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -23,7 +23,7 @@ using granmc::testing::scene_from_toml;
 
 namespace {
 
-/// B = rate (001 eq. 7), the example kernel of docs/ARCHITECTURE.md.
+/// B = rate (001 eq. 7), the example kernel of docs/developer-guide/architecture.md.
 struct ConstantRate {
   static constexpr const char* name = "constant-rate";
   static constexpr int dimension = 3;

@@ -82,7 +82,7 @@ TEST_F(LongCooling, TemperatureFallsMoreThanFortyDecadesAndStaysFinite) {
       // Centre-of-mass speed relative to the rms speed: rounding only (removed at each rescaling).
       ASSERT_LT(rep.momentum_relative[k], 1e-12);
     }
-    // The steps' energy bookkeeping against a direct sum (docs/physics.md, "Energy balance").
+    // The steps' energy bookkeeping against a direct sum (docs/methods/physics.md, "Energy balance").
     ASSERT_TRUE(rep.energy_residual.has_value());
     EXPECT_LT(*rep.energy_residual, energy_balance_tolerance);
     std::printf("[ measured ] energy residual %.2g\n", *rep.energy_residual);

@@ -9,8 +9,8 @@
 #include "kernel/theory/mixture_hcs.hpp"
 #include "kernel/theory/sonine.hpp"
 
-// HCS of a binary granular mixture (kernel/theory/mixture_hcs.hpp, docs/derivations/mixture-hcs.md).
-// Reference numbers are from our own exact derivation, docs/derivations/mixture_hcs.py (which reproduces them
+// HCS of a binary granular mixture (kernel/theory/mixture_hcs.hpp, docs/methods/derivations/mixture-hcs.md).
+// Reference numbers are from our own exact derivation, docs/methods/derivations/mixture_hcs.py (which reproduces them
 // independently in Python), not transcribed from the literature.
 
 using namespace granmc::theory;
@@ -252,7 +252,7 @@ TEST(MixtureHcs, SpeciesRelabellingSymmetry) {
 TEST(MixtureHcs, ExtremeMassRatiosStaySane) {
   // delta = omega = 1, mass ratios 1e-3 .. 1e3, alpha down to 0: finite, positive, a2 small and the Sonine
   // gamma within a few per cent of the Maxwellian one. (The linear Sonine theory does break down when the heavy
-  // species is also very dilute, e.g. mu = 1e3, delta = 1e-3: see docs/derivations/mixture-hcs.md.)
+  // species is also very dilute, e.g. mu = 1e3, delta = 1e-3: see docs/methods/derivations/mixture-hcs.md.)
   for (double mu : {1e-3, 1e-2, 0.1, 10.0, 100.0, 1e3}) {
     for (double alpha : {0.0, 0.3, 0.6, 0.9}) {
       const MixtureParameters mp = mixture_from_ratios(mu, 1.0, 1.0, alpha);
@@ -320,7 +320,7 @@ TEST(MixtureHcs, CollisionalMomentsFromExactDerivation) {
 TEST(MixtureHcs, DisksFromExactDerivation) {
   // `mixture_hcs.py --dimension 2` "reference values" and Psi_p^ij (unit n_j sigma_ij chi_ij); its moments agree
   // with the one-component ones of sonine_hcs.py --dimension 2 and, in --mc, with Monte Carlo on the circle
-  // (docs/derivations/mixture-hcs.md, "Disks").
+  // (docs/methods/derivations/mixture-hcs.md, "Disks").
   expect_reference_states(
       {{2, 1, 1, 0.5, 1.37042036301277, 1.36128966272593, 0.106917410401724, 0.0603818920589719},
        {2, 1, 1, 0.8, 1.12566811848768, 1.11830243835068, -0.0104226821409081, -0.0242357357340153},

@@ -58,7 +58,7 @@ void expect_stable(const Scene& scene, const char* what) {
       // Centre-of-mass speed over rms speed: rounding only (about 1e-16 sqrt(collisions)).
       ASSERT_LT(rep.momentum_relative[k], 1e-12) << what << " at t = " << r.times[k];
     }
-    // The steps' energy bookkeeping against a direct sum (docs/physics.md, "Energy balance").
+    // The steps' energy bookkeeping against a direct sum (docs/methods/physics.md, "Energy balance").
     ASSERT_TRUE(rep.energy_residual.has_value()) << what;
     EXPECT_LT(*rep.energy_residual, energy_balance_tolerance) << what;
     // The majorant is an estimate that grows when exceeded (000 sec. 3); in these states it must not run

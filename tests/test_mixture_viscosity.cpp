@@ -9,7 +9,7 @@
 #include "kernel/theory/viscosity.hpp"
 
 // First-Sonine shear viscosity of a binary mixture (kernel/theory/mixture_viscosity.hpp,
-// docs/derivations/viscosity.md, "Binary mixtures"). Limits against the one-species theory and the classical
+// docs/methods/derivations/viscosity.md, "Binary mixtures"). Limits against the one-species theory and the classical
 // elastic mixture theories, invariances, 000's statements, and regression values from viscosity.py.
 
 using namespace granmc::theory;
@@ -199,7 +199,8 @@ TEST(MixtureViscosityTheory, Figure7GrowsWithMassDisparity) {
 }
 
 TEST(MixtureViscosityTheory, RegressionAgainstTheDerivationScript) {
-  // docs/derivations/viscosity.py (its own assembly from the raw coefficient functions and mixture_hcs.py's state).
+  // docs/methods/derivations/viscosity.py (its own assembly from the raw coefficient functions and mixture_hcs.py's
+  // state).
   EXPECT_NEAR(mixture_viscosity_from_ratios(10.0, 1.0, 1.0, 0.7, 0.0, kThermostat).over_elastic, 1.94028291466936,
               1e-9);
   EXPECT_NEAR(mixture_viscosity_from_ratios(4.0, 0.5, 1.0, 0.8, 0.0, kThermostat).over_elastic, 1.70562910630032, 1e-9);

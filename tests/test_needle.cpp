@@ -1,4 +1,4 @@
-// The needle intruder (002 sec. 3.2, docs/derivations/needle.md): the closed-form fluxes and the
+// The needle intruder (002 sec. 3.2, docs/methods/derivations/needle.md): the closed-form fluxes and the
 // integrated flux against quadrature, the samplers against the moments of their target laws, the
 // event-time root finder on a state where Newton cycles, elastic equipartition, the inelastic ordering
 // T_B > T_tr > T_rot and the translation-rotation correlation R (002 eq. 34, Fig. 7), and the hard cases.

@@ -91,7 +91,7 @@ constexpr std::string_view scene_text = R"(
 )";
 
 /// The seed is set after parsing: it needs all 64 bits, and a scene file's seed is a TOML integer, at most
-/// 2^63 - 1 (docs/scenes.md). The files written must carry it whole.
+/// 2^63 - 1 (docs/formats/scenes.md). The files written must carry it whole.
 constexpr std::uint64_t seed_of_64_bits = 18446744073709551557ULL;
 
 /// One species: the theory applies.

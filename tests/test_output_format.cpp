@@ -1,6 +1,6 @@
 // The output schema (io/output_schema.hpp) drives both files: every record a run has is in the HDF5 file
 // under its path, and in the JSON summary under the same path exactly when it is marked for the summary;
-// docs/output-format.md is the page `granmc output-format` prints.
+// docs/formats/output-format.md is the page `granmc output-format` prints.
 #include <hdf5.h>
 
 #include <fstream>
@@ -69,10 +69,10 @@ class OutputFormat : public granmc_test::GranmcDirectory {
 TEST_F(OutputFormat, ThePageIsCurrent) {
   const Outcome o = granmc("output-format");
   ASSERT_EQ(o.status, 0) << o.stderr_text;
-  std::ifstream page(GRANMC_SOURCE_DIR "/docs/output-format.md");
+  std::ifstream page(GRANMC_SOURCE_DIR "/docs/formats/output-format.md");
   std::stringstream text;
   text << page.rdbuf();
-  EXPECT_EQ(o.stdout_text, text.str()) << "docs/output-format.md is stale: run `make output-format-page`";
+  EXPECT_EQ(o.stdout_text, text.str()) << "docs/formats/output-format.md is stale: run `make output-format-page`";
 }
 
 TEST_F(OutputFormat, AGasRunHasEveryRecordUnderOneNameInBothFiles) {

@@ -1,5 +1,5 @@
 // The theory of rough hard spheres and disks (kernel/theory/rough.hpp) against its exact limits and the table of
-// docs/derivations/rough_hcs.py (which checks the rates against the collision rule by Monte Carlo).
+// docs/methods/derivations/rough_hcs.py (which checks the rates against the collision rule by Monte Carlo).
 #include <cmath>
 #include <numbers>
 
@@ -34,7 +34,7 @@ TEST(RoughTheory, PerfectlyRoughElasticParticlesConserveEnergyAndShareItEqually)
 }
 
 TEST(RoughTheory, CoolingStateHasEqualRatesAndMatchesTheDerivationsTable) {
-  // Rows of `docs/derivations/rough_hcs.py` (d, alpha, beta, kappa, theta, zeta / nu).
+  // Rows of `docs/methods/derivations/rough_hcs.py` (d, alpha, beta, kappa, theta, zeta / nu).
   struct Row {
     int d;
     double alpha, beta, kappa, theta, zeta;
@@ -64,7 +64,7 @@ TEST(RoughTheory, SplitNoiseThetaHasItsLimitsAndTheMaxwellianTable) {
                 kappa * ((1.0 - 0.64) + c * b * (1.0 - b)) / (c * b * b), 1e-12);
   }
   // Disks, kappa = 1/2: the Maxwellian column beside the published DSMC of Megias and Santos (2022) in
-  // docs/validation.md (alpha, beta, epsilon, theta), computed independently from the balance of powers.
+  // docs/methods/validation.md (alpha, beta, epsilon, theta), computed independently from the balance of powers.
   struct Row {
     double alpha, beta, share, theta;
   };

@@ -1,6 +1,6 @@
 #pragma once
 // Test scenes from TOML text, read by the real parser (granmc::parse_scene, io/scene_file.hpp; every key is
-// documented in docs/scenes.md). A test's scene is then one that `granmc run` accepts, spelled out as a scene
+// documented in docs/formats/scenes.md). A test's scene is then one that `granmc run` accepts, spelled out as a scene
 // file would spell it, and checked by the same rules (unknown keys and invalid combinations are errors).
 //
 //   constexpr std::string_view text = R"(

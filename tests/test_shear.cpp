@@ -229,7 +229,7 @@ void expect_elastic_viscosity(int dimension, int replicas, double t_end, int sam
 
 TEST(Shear, ElasticDiluteGasHasTheNavierStokesViscosity) {
   // a* = a / nu ~ 0.08 at the start and falling (viscous heating): the shear-thinning correction, of order
-  // a*^2, is below 1 % (docs/physics.md), well inside the replica CI of this run.
+  // a*^2, is below 1 % (docs/methods/physics.md), well inside the replica CI of this run.
   // 24 small replicas rather than a few large ones: the CI (lambda_p = 3.2 times the replica standard
   // error) assumes the replica variance is well estimated.
   // Bound: measured today 0.073; bound 1.5x.
@@ -328,7 +328,7 @@ TEST(Shear, ShiftedCollisionsConserveMomentum) {
 
 TEST(Shear, EnergyBookkeepingClosesWithEveryShearEffect) {
   // Shear map, Enskog shift, Gaussian thermostat and 003's relaxation term together: each reports its
-  // energy change, so the tracked energy equals the summed one to rounding (docs/physics.md).
+  // energy change, so the tracked energy equals the summed one to rounding (docs/methods/physics.md).
   const Scene s = sheared_gas(0.6, 0.2, 0.5, 2, 4000, R"(
     [relaxation]
     enabled = true

@@ -9,9 +9,9 @@
 #include "kernel/theory/sonine_hcs.hpp"
 #include "kernel/theory/white_noise.hpp"
 
-// Beyond-linear Sonine theory of the HCS (kernel/theory/sonine_hcs.hpp, docs/derivations/sonine-hcs.md).
+// Beyond-linear Sonine theory of the HCS (kernel/theory/sonine_hcs.hpp, docs/methods/derivations/sonine-hcs.md).
 // Reference numbers below are from our own exact (rational-arithmetic) derivation,
-// docs/derivations/sonine_hcs.py, not transcribed from the literature.
+// docs/methods/derivations/sonine_hcs.py, not transcribed from the literature.
 
 using namespace granmc::theory;
 
@@ -178,7 +178,7 @@ TEST(WhiteNoiseSonine, SecondSonineSolvesTheConditions) {
 }
 
 TEST(IsotropicWhiteNoiseA2, HasTheExactLimitsAndTheDerivationsValues) {
-  // docs/derivations/vhs_white_noise_a2.py: lambda = 0 is the exact Maxwell a2, lambda = 1 with d = 3 van Noije
+  // docs/methods/derivations/vhs_white_noise_a2.py: lambda = 0 is the exact Maxwell a2, lambda = 1 with d = 3 van Noije
   // and Ernst's hard spheres (whose e is uniform); in between the script's exact rationals.
   for (const int d : {3, 2})
     for (double alpha = 0.0; alpha <= 1.0; alpha += 0.05) {
@@ -196,7 +196,7 @@ TEST(IsotropicWhiteNoiseA2, HasTheExactLimitsAndTheDerivationsValues) {
 }
 
 TEST(IsotropicWhiteNoiseSecondSonine, HasTheExactLimitsAndTheDerivationsValues) {
-  // docs/derivations/vhs_white_noise_a2.py, "Second Sonine": lambda = 1 with d = 3 is the hard spheres' linear
+  // docs/methods/derivations/vhs_white_noise_a2.py, "Second Sonine": lambda = 1 with d = 3 is the hard spheres' linear
   // second Sonine (their e is uniform); lambda = 0 keeps the exact Maxwell a2; at lambda = 1/2 the script's exact
   // rationals.
   for (double alpha = 0.05; alpha < 1.0; alpha += 0.05) {
@@ -216,8 +216,8 @@ TEST(IsotropicWhiteNoiseSecondSonine, HasTheExactLimitsAndTheDerivationsValues) 
   EXPECT_NEAR(spheres.a3, -60017664.0 / 6049078505.0, 1e-15);
 }
 
-/// Hard disks: the table of docs/derivations/sonine-hcs.md ("Hard disks"), printed to 8 decimals by
-/// `docs/derivations/sonine_hcs.py --dimension 2`: linear and nonlinear first Sonine, linear and nonlinear
+/// Hard disks: the table of docs/methods/derivations/sonine-hcs.md ("Hard disks"), printed to 8 decimals by
+/// `docs/methods/derivations/sonine_hcs.py --dimension 2`: linear and nonlinear first Sonine, linear and nonlinear
 /// second Sonine (a2, a3).
 TEST(SonineHcs, DisksAgreeWithTheDerivationsTable) {
   struct Row {
@@ -240,7 +240,7 @@ TEST(SonineHcs, DisksAgreeWithTheDerivationsTable) {
     EXPECT_NEAR(second_sonine_nonlinear(r.alpha, SonineState::cooling, 2).a2, r.a2_2s_nl, 5e-9);
     EXPECT_NEAR(second_sonine_nonlinear(r.alpha, SonineState::cooling, 2).a3, r.a3_2s_nl, 5e-9);
   }
-  // mu_2 of disks is half that of spheres at every (a2, a3) (docs/derivations/sonine-hcs.md).
+  // mu_2 of disks is half that of spheres at every (a2, a3) (docs/methods/derivations/sonine-hcs.md).
   EXPECT_EQ(hcs_collisional_moments(0.6, 0.05, -0.02, 2).mu2, 0.5 * hcs_collisional_moments(0.6, 0.05, -0.02).mu2);
 }
 

@@ -160,8 +160,8 @@ TEST(SpreadSystem, RefusesWhatItDoesNotImplement) {
 }
 
 TEST(SpreadSystem, AStepNeedsAHandfulOfWaves) {
-  // The cost model of docs/scaling.md: two exchanges per wave. A particle is in about 2C/N of a step's C
-  // candidates, so chains of candidates that share particles stay short.
+  // The cost model of docs/developer-guide/scaling.md: two exchanges per wave. A particle is in about 2C/N of a step's
+  // C candidates, so chains of candidates that share particles stay short.
   const Scene s = scene_from_toml(
       cooling_text,
       {{"storage", "double"}, {"particles", 100000}, {"thermostat", R"(kind = "none")"}, {"dimension", 3}});

@@ -1,6 +1,6 @@
 // Weighted particles (SWPM, schemes/swpm_scheme.hpp): the choice by weight, the weight control's
 // conservation and targets, and the scheme against exact results for Maxwell pseudomolecules under white
-// noise (001 eqs. 16-17 for T(t); docs/derivations/maxwell-white-noise-a2.md for the steady a2), with its
+// noise (001 eqs. 16-17 for T(t); docs/methods/derivations/maxwell-white-noise-a2.md for the steady a2), with its
 // tail resolved far below the equal-weight gas's 1/N; the same for disks, and weighted hard disks against the
 // equal-weight event scheme.
 #include <algorithm>
@@ -262,7 +262,7 @@ TEST(Swpm, HardDisksAgreeWithTheEqualWeightEventScheme) {
   EXPECT_LE(std::fabs(aw.mean - ae.mean), aw.ci + ae.ci);
   // Bounds: measured today T 0.034 (weighted) and 0.017, a2 0.0143 and 0.0094; bounds 1.5x. A hard-disk
   // law scattering e uniformly, as Maxwell disks do, would lose 3/4 as much energy per collision and move T by
-  // (4/3)^(2/3) - 1 = 21 % (docs/physics.md, "001's kernels in the plane"): far outside these CIs.
+  // (4/3)^(2/3) - 1 = 21 % (docs/methods/physics.md, "001's kernels in the plane"): far outside these CIs.
   EXPECT_LT(tw.ci, 0.051);
   EXPECT_LT(te.ci, 0.026);
   EXPECT_LT(aw.ci, 0.0215);

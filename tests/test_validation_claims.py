@@ -1,4 +1,4 @@
-"""docs/validation.md holds every claim it makes (tests/check_validation_claims.py), and the checker fails where
+"""docs/methods/validation.md holds every claim it makes (tests/check_validation_claims.py), and the checker fails where
 it should, shown on a small page of its own: a table that no longer supports its claim, a claim whose text
 changed, an agreement claim nobody registered. Run by ctest (test_validation_claims)."""
 import os

@@ -9,9 +9,9 @@
 #include "kernel/theory/steady_shear.hpp"
 #include "kernel/theory/viscosity.hpp"
 
-// First-Sonine Navier-Stokes shear viscosity (kernel/theory/viscosity.hpp, docs/derivations/viscosity.md).
+// First-Sonine Navier-Stokes shear viscosity (kernel/theory/viscosity.hpp, docs/methods/derivations/viscosity.md).
 // The collision integrals behind the formulas are checked exactly, and by independent quadrature, in
-// docs/derivations/viscosity.py; here: limits, the papers' closed forms, and the papers' statements.
+// docs/methods/derivations/viscosity.py; here: limits, the papers' closed forms, and the papers' statements.
 
 using namespace granmc::theory;
 
@@ -230,7 +230,7 @@ TEST(SteadyShearTheory, IsTheEndOfTheGradMomentEquations) {
 TEST(ViscosityTheory, DisksHaveTheFirstSonineCoefficientsOfDimensionTwo) {
   // shear_viscosity in d = 2 against the d-general forms (theory/viscosity.hpp) written here with d explicit,
   // dilute and dense. The d-general dilute collision integrals are checked by Monte Carlo in
-  // docs/derivations/viscosity.md, "Disks".
+  // docs/methods/derivations/viscosity.md, "Disks".
   const double d = 2.0;
   for (double alpha : {0.3, 0.6, 0.9, 1.0})
     for (ViscosityReference r : {kCooling, kThermostat})

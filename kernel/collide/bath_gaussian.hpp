@@ -35,10 +35,10 @@ struct GaussianBath {
   }
 
   /// Phihat(y, s): the mean of phihat over [y - s, y + s], i.e. the needle's total flux Phi in units of
-  /// rho L / sqrt(a) (002 eq. 26 for general a and L, docs/derivations/needle.md). Evaluated without cancellation: a
-  /// Taylor series for s < 1e-2 (next term below 3e-15), the sum Ghat(s + |y|) + Ghat(s - |y|) of positive terms for
-  /// |y| <= s, and for |y| > s the split Ghat(z) = z^2 / 2 + 1/4 + T(z) (z >= 0), whose polynomial part differences to
-  /// 2 |y| s exactly.
+  /// rho L / sqrt(a) (002 eq. 26 for general a and L, docs/methods/derivations/needle.md). Evaluated without
+  /// cancellation: a Taylor series for s < 1e-2 (next term below 3e-15), the sum Ghat(s + |y|) + Ghat(s - |y|) of
+  /// positive terms for |y| <= s, and for |y| > s the split Ghat(z) = z^2 / 2 + 1/4 + T(z) (z >= 0), whose polynomial
+  /// part differences to 2 |y| s exactly.
   static double unit_total_flux(double y, double s) noexcept {
     const double inv_sqrt_pi = 1.0 / std::sqrt(std::numbers::pi);
     y = std::fabs(y);

@@ -14,7 +14,7 @@
 //           k = (1 + sqrt 2) / 2 = max (1 + z^2) / (1 + z^4); draw z from the mixture E (a Cauchy piece of
 //           weight x1 k pi, or the exact z / (1 + z^4) piece of weight pi / 4), accept with h(z) / E(z);
 //           acceptance >= 0.58.
-// For the needle (collide/needle_flux.hpp, docs/derivations/needle.md, "Power-law bath"): the flux on both
+// For the needle (collide/needle_flux.hpp, docs/methods/derivations/needle.md, "Power-law bath"): the flux on both
 // sides phi(u) = (rho / sqrt a) phihat(sqrt(a) u) and its mean over a window, from
 //   phihat(y) = (sqrt 2 / pi) [2 |y| A(|y|) + atan(1 / y^2)],
 //   Ghat(z) = (sqrt 2 / pi) [z^2 A(z) + B(z) + z atan(1 / z^2)] (odd, Ghat' = phihat), B(z) = int_0^z t^2 dt / (1 +

@@ -4,7 +4,7 @@
 // so in the Lagrangian frame the relative velocity that decides and drives the collision is
 //     g_kl = V_k - V_l - sigma_ij a.sigma-hat,   a.sigma-hat = a sigma-hat_y x-hat,
 // used in the acceptance Theta(g.sigma) omega_kl / omega_max and in the update (000 eqs. 14-15)
-// (docs/physics.md derives the sign). The collision then changes the peculiar kinetic energy by
+// (docs/methods/physics.md derives the sign). The collision then changes the peculiar kinetic energy by
 //     -(1 - alpha^2) mu (g.sigma)^2 - 2 (1 + alpha) mu (g.sigma) s,   s = sigma_ij a sigma-hat_x sigma-hat_y,
 // (mu = m_i m_j / (m_i + m_j)): the inelastic loss, and the collisional part of the viscous heating, equal
 // to -a sigma_ij J sigma-hat_x sigma-hat_y with the impulse J = (1 + alpha) mu (g.sigma). Every accepted

@@ -10,7 +10,7 @@
 // The point g-hat + n is uniform on the unit sphere centred at g-hat, which passes through the origin; the
 // ray from the origin at angle theta to g-hat meets it at distance r = 2 cos(theta) and at angle theta to
 // its normal there, so the area it sweeps per solid angle is r^2 / cos(theta) = 4 cos(theta): the density
-// of sigma-hat is proportional to cos(theta), as required (docs/physics.md).
+// of sigma-hat is proportional to cos(theta), as required (docs/methods/physics.md).
 //
 // Disks (d = 2): the same construction on the circle sweeps a length r / cos(theta) = 2 per unit angle, a
 // uniform theta, so it does not carry over. Instead n = (cos theta, sin theta, 0) is drawn with sin(theta)

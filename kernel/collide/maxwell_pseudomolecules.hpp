@@ -9,7 +9,7 @@
 //    uniform. Its mean over sigma-hat is prefactor / 4 (spheres) or prefactor / 2 (disks), independent of
 //    |g|: with prefactor = |S^(d-1)| rate / that mean (PairCoefficients for collision.rate > 0; 16 pi rate
 //    for spheres, 4 pi rate for disks) the total rate per pair is |S^(d-1)| rate, the kernel B = rate.
-//    docs/physics.md derives both.
+//    docs/methods/physics.md derives both.
 #include <cmath>
 #include <cstddef>
 #include <span>

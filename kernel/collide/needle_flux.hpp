@@ -1,5 +1,5 @@
 #pragma once
-// The needle intruder in a 2D Gaussian bath (002 sec. 3.2, derivation in docs/derivations/needle.md):
+// The needle intruder in a 2D Gaussian bath (002 sec. 3.2, derivation in docs/methods/derivations/needle.md):
 // collision rates, the free-flight event time, exact sampling of the collision and its outcome.
 //
 // Bath: point particles of mass m = 1, number density rho per area, f(v) = (a / pi) exp(-a |v|^2), so

@@ -6,7 +6,7 @@
 //  - hard disks, whose law is not isotropic in the plane: the impact variate n of impact_variate<2>
 //    (collide/impact_direction.hpp), sigma-hat from n and u = v_i - v_j, and 000's rule
 //    (collide/inelastic_rule.hpp), which is 001 eq. (4) with e the reflection of u-hat in sigma-hat.
-// On the sphere the two ways are the same law (docs/physics.md, "001's kernels in the plane").
+// On the sphere the two ways are the same law (docs/methods/physics.md, "001's kernels in the plane").
 #include <cstddef>
 #include <span>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Post-collision velocities and spins of rough inelastic hard spheres (disks) with constant normal and
 // tangential restitution (Huthmann and Zippelius, Phys. Rev. E 56 (1997) R6275; Luding, Huthmann, McNamara and
-// Zippelius, Phys. Rev. E 58 (1998) 3416), docs/derivations/rough-hcs.md. With sigma-hat from particle k to
+// Zippelius, Phys. Rev. E 58 (1998) 3416), docs/methods/derivations/rough-hcs.md. With sigma-hat from particle k to
 // particle l and the spins s = (sigma / 2) omega (core/species_store.hpp), the relative velocity of the contact
 // points is
 //   G = g - sigma-hat x (s_k + s_l),   g = V_k - V_l,   G.sigma-hat = g.sigma-hat,

@@ -1,7 +1,7 @@
 #pragma once
 // Fixed-size, cache-line-aligned buffer of trivially copyable values. Large buffers are aligned to
 // 2 MiB and advised for transparent huge pages: random pair access over 10^7 particles is bound by
-// TLB and cache misses (docs/performance.md).
+// TLB and cache misses (docs/developer-guide/performance.md).
 #include <sys/mman.h>
 
 #include <cstddef>
@@ -18,7 +18,8 @@ namespace detail {
 
 /// One freed huge-page block per thread, kept for the thread's next allocation of the same size. A run
 /// allocates each replica's particle store anew on the thread that runs it; a fresh block makes the kernel
-/// zero every page on first touch, a third of the set-up of a 10^7-particle replica (docs/performance.md).
+/// zero every page on first touch, a third of the set-up of a 10^7-particle replica
+/// (docs/developer-guide/performance.md).
 class SpareHugeBlock {
  public:
   SpareHugeBlock() = default;

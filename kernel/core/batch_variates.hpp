@@ -2,7 +2,7 @@
 // The conversions of core/sampling.hpp over arrays of N uniforms at once, in SIMD registers (xsimd). A
 // scheme that knows its next N draws ahead (their random words depend on the draw's counter only)
 // prepares their exponentials, normals and directions here, so the logs, square roots and polynomials run
-// several lanes wide instead of one candidate at a time (docs/performance.md, "Event scheme").
+// several lanes wide instead of one candidate at a time (docs/developer-guide/performance.md, "Event scheme").
 //
 // Same formulas as the scalar versions: the directions and the angles of Box-Muller are turn_reduce of
 // core/turn_sincos.hpp with identical operations, so directions agree bit for bit. The logarithm is

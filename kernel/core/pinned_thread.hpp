@@ -3,8 +3,8 @@
 // (schemes/concurrent_rounds.hpp), which wait on each other twice per round. Left to the scheduler, the thread
 // that a step's parallel region woke often ran on the CPU of the thread that woke it, and the two took turns on
 // one CPU for much of the step: one replica of 10^5 particles took 2 to 6 times longer on two threads in some
-// runs than in others, and never so with the threads bound (docs/scaling.md). Pinned to the i-th CPU of the set
-// it may run on, each thread of the replicas' teams runs beside the others; the thread's own set comes back at
+// runs than in others, and never so with the threads bound (docs/developer-guide/scaling.md). Pinned to the i-th CPU of
+// the set it may run on, each thread of the replicas' teams runs beside the others; the thread's own set comes back at
 // the end of the scope. Linux only; elsewhere, or when OpenMP binds its threads already (OMP_PROC_BIND), or when
 // the set has one CPU (MPI ranks bound to cores), it does nothing. Processes whose sets overlap (MPI ranks
 // started unbound on one host) pin their teams to the same CPUs: bind such ranks.

@@ -1,7 +1,7 @@
 #pragma once
 // The collective operations a system spread over several processes needs (one large replica over MPI
-// ranks, kernel/schemes/rank_wave_backend.hpp; docs/scaling.md). The kernel sees only this interface: the MPI
-// implementation lives in drivers/ (drivers/mpi_replicas.cpp), and SingleRank is the one-process case.
+// ranks, kernel/schemes/rank_wave_backend.hpp; docs/developer-guide/scaling.md). The kernel sees only this interface:
+// the MPI implementation lives in drivers/ (drivers/mpi_replicas.cpp), and SingleRank is the one-process case.
 #include <cstddef>
 #include <span>
 #include <vector>

@@ -5,7 +5,7 @@
 // code that reads the floats back get the doubles from before the conversion: a float store followed by
 // a read of the same record (tests/test_species_store.cpp), and a register's lanes rounded one by one
 // through a small array (core/simd.hpp, rounded_to; tests/test_numerics.cpp) returned unrounded values.
-// The empty asm statement costs no instruction; the value is the same. docs/accuracy-cost.md.
+// The empty asm statement costs no instruction; the value is the same. docs/user-guide/accuracy-cost.md.
 namespace granmc {
 
 inline float rounded_float(double x) noexcept {

@@ -1,6 +1,6 @@
 #pragma once
 // Scene: what to simulate, as a plain, validated, immutable value. io/scene_file.cpp builds it from a
-// TOML file (the contract of SCENES.md, documented in docs/scenes.md) and is the only place that checks
+// TOML file (the contract of SCENES.md, documented in docs/formats/scenes.md) and is the only place that checks
 // it; everything downstream may assume the invariants stated beside each member.
 #include <array>
 #include <cstdint>
@@ -20,7 +20,7 @@ enum class BathKind { gaussian, power_law };
 enum class DtScaling { fixed, thermal };
 /// Where the observations fall: t_k = k t_end / samples, or geometrically from dt to t_end.
 enum class SampleSpacing { linear, log };
-/// The scalar of the stored particle velocities (docs/scenes.md, run.storage; core/species_store.hpp).
+/// The scalar of the stored particle velocities (docs/formats/scenes.md, run.storage; core/species_store.hpp).
 enum class Storage { double_precision, single_precision };
 
 /// The scene-file spelling of a method ("dsmc", "event", "gillespie").

@@ -6,11 +6,11 @@
 // is a measured choice: a random candidate pair among 10^7 particles touches 6 cache lines with one array
 // per component but 2 with one packed 32-byte record per particle (x, y, z, aux), and ran 1.6x faster
 // in a plain loop, 2.1-2.3x with prefetch (perf/bench_layout.cpp keeps the measurement;
-// docs/performance.md the figures). The fourth slot `aux`
+// docs/developer-guide/performance.md the figures). The fourth slot `aux`
 // is reserved for the lazy-update time t_j of the event scheme (001 sec. 4), so that scheme also stays
 // within 32 bytes per particle; the time-stepped scheme leaves it unused.
 //
-// The scalar of the record is the scene's storage precision (run.storage, docs/scenes.md): double, or
+// The scalar of the record is the scene's storage precision (run.storage, docs/formats/scenes.md): double, or
 // float for half the memory (16-byte records). The physics always computes in double: a velocity is
 // converted when loaded and rounded when stored. A float last-update time is kept relative to the time of
 // the last full synchronisation (restart_clock), so its resolution is that of the time since then, not

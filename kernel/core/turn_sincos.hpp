@@ -2,8 +2,8 @@
 // cos and sin of the angle 2 pi t for t in [0, 1], without branches: the random directions of every scheme
 // (a uniform azimuth) need it once per candidate, and libm's sincos spent 134 instructions and 2.1
 // mispredicted branches per candidate on argument reduction and range tests that this domain never needs
-// (callgrind, docs/performance.md). Accuracy: within 1.7e-16 of cos and sin of 2 pi t (below one ulp of 1,
-// tests/test_numerics.cpp); libm applied to 2 pi t rounded to double is off by up to 4.4e-16.
+// (callgrind, docs/developer-guide/performance.md). Accuracy: within 1.7e-16 of cos and sin of 2 pi t (below one ulp of
+// 1, tests/test_numerics.cpp); libm applied to 2 pi t rounded to double is off by up to 4.4e-16.
 //
 // Reduction is exact: x = 4t, q = nearest integer to x (0..4), f = x - q in [-1/2, 1/2] (exact: x and q
 // are within a factor 2, or q = 0), theta = f pi / 2 in [-pi/4, pi/4]. There the Taylor series converge

@@ -7,7 +7,7 @@
 //
 // zeta is the step's thermostat rate, zeta dt = ln(1 + loss / E) from the collisional loss (the same
 // expression as the thermostat's). f^(0) is sampled as the first-Sonine HCS distribution, a Maxwellian
-// times 1 + a2 S2 with a2 = c0 / 2 of 003 (core/sonine_maxwellian.hpp, exact; docs/physics.md measures
+// times 1 + a2 S2 with a2 = c0 / 2 of 003 (core/sonine_maxwellian.hpp, exact; docs/methods/physics.md measures
 // what the choice costs against the true HCS), in d = 3 or 2. One species (003 is monodisperse).
 //
 // Particles are chosen by geometric gaps (O(replaced) work, not O(N)): the gap before the next replaced

@@ -16,7 +16,7 @@ namespace granmc {
 
 struct LagrangianShear {
   // Half the step before the collision stage and half after (Strang): with the whole step before it, the
-  // stationary shear stress is low by nu_eta dt / 2 (docs/physics.md: 1.1 % at dt = 0.03 mean free times).
+  // stationary shear stress is low by nu_eta dt / 2 (docs/methods/physics.md: 1.1 % at dt = 0.03 mean free times).
   // The step fuses each second half with the next first half: one pass per step.
   static constexpr StepPhase phase = StepPhase::around_collisions;
   static constexpr const char* name = "lagrangian-shear";

@@ -35,7 +35,7 @@ namespace granmc {
 // in_collision: an evaluator the collision stage itself uses (collide/enskog_shear_shift.hpp); it has no apply.
 // around_collisions: a free-flight effect applied in two halves, dt/2 before the collision stage and dt/2
 // after it (Strang splitting: the steady-state error of the step becomes O(dt^2) instead of O(dt); for
-// the shear stress of the first-order split it is -nu_eta dt / 2, docs/physics.md). Consecutive halves are
+// the shear stress of the first-order split it is -nu_eta dt / 2, docs/methods/physics.md). Consecutive halves are
 // fused into one apply per step (schemes/dsmc.hpp), so apply(dt) must compose: apply(s) then apply(t) is
 // apply(s + t).
 enum class StepPhase { free_flight, after_collisions, in_collision, around_collisions };

@@ -77,7 +77,7 @@ struct WeightedSeries {
   double conservation_residual = 0.0;  // largest relative change of mass, momentum or energy at a control
 };
 
-/// The documented bound on ReplicaSeries::energy_residual (docs/physics.md, "Energy balance"). The suite
+/// The documented bound on ReplicaSeries::energy_residual (docs/methods/physics.md, "Energy balance"). The suite
 /// measures 2e-16 to 1.3e-15; rounding that added up linearly (1e-16 per step) over the 10^5 steps of a long
 /// heated run, which never rescales, would reach 1e-11. An effect that does not report its energy change
 /// misses by 1e-2 to 0.2 in tests/test_shear.cpp (checked by breaking the shear map's return).
@@ -104,7 +104,7 @@ struct ReplicaSeries {
   // Time-stepped gas (schemes/dsmc.hpp): the largest |E_tracked / E_summed - 1| over the sample times, where
   // E_tracked is the step's energy bookkeeping (start, minus collisional losses, plus each effect's returned
   // change) and E_summed = sum_i m_i sum_k |c_k|^2 summed afresh; closes to rounding when every effect
-  // reports what it did (docs/physics.md, "Energy balance"). Empty for schemes that do not track energy.
+  // reports what it did (docs/methods/physics.md, "Energy balance"). Empty for schemes that do not track energy.
   std::optional<double> energy_residual;
   std::optional<ShearSeries> shear;        // uniform shear flow
   std::optional<IntruderSeries> intruder;  // method "gillespie"

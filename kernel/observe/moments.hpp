@@ -30,7 +30,7 @@ struct SpeciesMoments {
   }
   /// Third Sonine coefficient a3 = 1 + 3 a2 - d^2/((d+2)(d+4)) <c^6> / <c^2>^3 (9/35 for spheres, 1/6 for
   /// disks; zero for a Maxwellian; from <c^6> = (d/2)(d/2+1)(d/2+2)(1 + 3 a2 - a3) in units of sqrt(2T/m),
-  /// docs/derivations/sonine-hcs.md).
+  /// docs/methods/derivations/sonine-hcs.md).
   [[nodiscard]] double a3(int dimension) const noexcept {
     const double m2 = mean_c2();
     const double d = dimension;

@@ -14,7 +14,7 @@ SymTensor reduced_kinetic_pressure(const Scene& scene, const BasicGasState<Real>
   // About the flow velocity (zero to rounding: collisions and the shear map conserve momentum).
   const GasTotals totals = gas_totals(scene, gas_moments(state));
   const Vec3 flow = (1.0 / totals.mass) * totals.momentum;
-  LaneCompensatedSum xx, yy, zz, xy, xz, yz;  // lane by lane (docs/performance.md)
+  LaneCompensatedSum xx, yy, zz, xy, xz, yz;  // lane by lane (docs/developer-guide/performance.md)
   const SimdDouble fx(flow.x), fy(flow.y), fz(flow.z);
   for (std::size_t i = 0; i < state.species.size(); ++i) {
     const double m = scene.species[i].mass;

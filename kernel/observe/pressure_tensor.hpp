@@ -23,7 +23,7 @@ double thermal_speed(const Scene& scene, double temperature);
 /// The effective collision frequency nu = sqrt(pi) n sigma_12^2 v_0 of 000 Fig. 10 (sigma_12 the
 /// cross-diameter; for one species sigma), at mixture temperature T. Disks (run.dimension = 2): nu =
 /// (sqrt(pi) / 2) n sigma_12 v_0, the same share 1 / (2 sqrt 2) of the Maxwellian collision frequency of one
-/// species as in d = 3 (docs/physics.md, "Uniform shear flow of disks").
+/// species as in d = 3 (docs/methods/physics.md, "Uniform shear flow of disks").
 double effective_collision_frequency(const Scene& scene, double temperature);
 
 }  // namespace granmc

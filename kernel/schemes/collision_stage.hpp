@@ -21,7 +21,7 @@
 // candidate belongs to pair q with probability remaining_q / remaining), not run pair after pair as the
 // paper's text lists them: running all (1,1) candidates before all (1,2) ones is a splitting whose error
 // grows with dt (at nu dt = 0.16 it moved the temperature ratio of a mixture by 0.01, eight times its CI,
-// docs/physics.md). The number of candidates of each pair per step is the paper's.
+// docs/methods/physics.md). The number of candidates of each pair per step is the paper's.
 //
 // Velocities are in stored units (V = u c); omega_max and omega_kl are in units of u (their physical
 // values are u times these), which leaves the acceptance ratio unchanged.
@@ -177,7 +177,7 @@ class BatchedStage {
     // Per pair, once per step: the two stores and the ranges the indices are drawn from (N_j - 1 within a
     // species). Each candidate then finds its two particles as it is drawn, and the collision loop reads
     // them without going through the pair and the store again (for a mixture that chain of loads stood in
-    // front of every velocity load: docs/performance.md, effects).
+    // front of every velocity load: docs/developer-guide/performance.md, effects).
     for (std::size_t q = 0; q < n_pairs_; ++q) {
       store_k_[q] = &state.species[pairs[q].i];
       store_l_[q] = &state.species[pairs[q].j];
@@ -320,7 +320,7 @@ class BatchedStage {
   /// one collides; candidate b of the current batch prefetches the records of candidate b of the next, a batch
   /// ahead of their use. The prefetches are spread over the batch: issued a batch's 128 at once, more than the
   /// core's outstanding misses, the last ones waited a memory latency (as in the event scheme,
-  /// docs/performance.md). In a round the deferred candidates of a batch are skipped.
+  /// docs/developer-guide/performance.md). In a round the deferred candidates of a batch are skipped.
   template <class BatchAt>
   void run_batches(std::uint64_t first, std::uint64_t end, BatchAt&& batch_at) noexcept {
     if (first >= end) return;
@@ -361,7 +361,7 @@ class BatchedStage {
   std::size_t choose_pair(std::uint32_t word, std::uint64_t s) noexcept {
     const double r = uniform_open(word) * static_cast<double>(total_ - s);
     // q = the number of cumulative counts <= r, without branches (a loop here mispredicted 0.86 times
-    // per candidate, callgrind, docs/performance.md). r < total - s = candidates left, so q is a pair
+    // per candidate, callgrind, docs/developer-guide/performance.md). r < total - s = candidates left, so q is a pair
     // with candidates left. The same q as subtracting the counts from r one by one: r < 2^53, so r minus
     // an integer below it is exact.
     std::size_t q = 0;
@@ -504,7 +504,7 @@ class BatchedStage {
     const Vec3 vk = d.pk[b].velocity();
     const Vec3 vl = d.pl[b].velocity();
     // n (sigma-hat itself with a shift) is read where it is used: read before the acceptance it
-    // holds registers the one-pair loop needs (callgrind, docs/performance.md).
+    // holds registers the one-pair loop needs (callgrind, docs/developer-guide/performance.md).
     Vec3 sigma;
     double g_sigma;
     if constexpr (Shift::active) {  // the paper's form: sigma-hat = n first
@@ -730,7 +730,7 @@ class BatchedStage {
 /// share no particle with an earlier one computed in SIMD beforehand). Two candidates that share a particle
 /// therefore still act in sequence, and the result is the same for every batch size and with or without
 /// the screen (tests/test_collision_stage.cpp); the batches only let the memory loads of different
-/// candidates overlap and the acceptance run in SIMD (perf/bench_collisions.cpp, docs/performance.md).
+/// candidates overlap and the acceptance run in SIMD (perf/bench_collisions.cpp, docs/developer-guide/performance.md).
 template <class Kernel, std::uint64_t batch = 64, class Shift = NoCollisionShift, class Real = double>
 void collide_step(BasicGasState<Real>& state, std::span<const PairCoefficients> pairs, std::span<double> omega_max,
                   std::span<const std::uint64_t> candidates, const RandomStream& rng, std::span<CollisionTally> tallies,

@@ -1,6 +1,7 @@
 #pragma once
 // The collision stage of one step on several threads, with the same bits as the stage on one
-// (schemes/collision_stage.hpp): concurrent rounds. docs/scaling.md gives the argument in full; in short:
+// (schemes/collision_stage.hpp): concurrent rounds. docs/developer-guide/scaling.md gives the argument in full; in
+// short:
 //
 // The candidates of a step, their pairs, particles and uniforms, depend on the counters only, never on a
 // velocity. A round of T threads splits its candidates into a leader's chunk (thread 0) and T - 1 followers'
@@ -51,7 +52,7 @@ struct ConcurrentRounds {
 };
 
 /// Candidates of a follower's chunk for N particles: about N / 4096 (a multiple of the batch), at least 512 and
-/// at most 2048 (a larger chunk defers more candidates; docs/scaling.md).
+/// at most 2048 (a larger chunk defers more candidates; docs/developer-guide/scaling.md).
 inline std::uint64_t round_chunk(std::uint64_t particles) noexcept {
   return std::clamp<std::uint64_t>(particles / 4096 / 64 * 64, 512, 2048);
 }

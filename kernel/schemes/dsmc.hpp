@@ -118,7 +118,7 @@ class BasicDsmc {
   [[nodiscard]] double tracked_twice_energy() const noexcept { return twice_energy_; }
 
   /// The collisional transfer part of the pressure tensor over nT (000 eq. 18, n/(N dt) per collision of
-  /// the sum of J sigma_ij sigma-hat sigma-hat; docs/physics.md derives the factor), averaged over the time
+  /// the sum of J sigma_ij sigma-hat sigma-hat; docs/methods/physics.md derives the factor), averaged over the time
   /// since the last call; zero without an Enskog shift. Resets the average.
   SymTensor take_collisional_pressure() noexcept {
     const double span = state_.time - transfer_since_;
@@ -222,7 +222,7 @@ class BasicDsmc {
       if (p.i == p.j && n_i < 2.0) continue;  // no partner within a species of one particle
       // 1/2 N_i omega_max dt candidates (000 sec. 3), with N_i - 1 for a pair within one species: the
       // partner is drawn among the N_i - 1 others, so each of the N_i (N_i - 1) ordered pairs gets its
-      // exact rate omega / N_i; the paper's N_i over-counts by N_i / (N_i - 1) (docs/physics.md).
+      // exact rate omega / N_i; the paper's N_i over-counts by N_i / (N_i - 1) (docs/methods/physics.md).
       const double partners = p.i == p.j ? n_i - 1.0 : n_i;
       const double wanted = 0.5 * partners * omega_max_[q] * u_dt + carried_[q];
       if (!(wanted < static_cast<double>(RandomStream::counter_limit / 8)))

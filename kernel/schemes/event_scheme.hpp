@@ -14,7 +14,7 @@
 // (pi_hat = pi rate (n - 1) U_max^lambda), xi in the plane, and e uniform on the circle; hard disks instead
 // collide through an impact direction and 000's rule (collide/rate_form_scattering.hpp).
 //
-// The majorant, and what this code does differently from the paper's listing (docs/physics.md):
+// The majorant, and what this code does differently from the paper's listing (docs/methods/physics.md):
 //  - U_max bounds |v_i - v_j| by |v_i - V| + |v_j - V| for a fixed reference velocity V, so the raise of
 //    steps 2.7 and 2.10 is U_max = max(U_max, 2 |v_i - V|, 2 |v_j - V|); the printed listing omits the 2.
 //  - A candidate is accepted against the U_max its waiting time was drawn with (thinning is exact only

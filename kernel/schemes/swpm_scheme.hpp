@@ -3,7 +3,7 @@
 // Comput. Modelling 33 (2001) 907) for the uniformly heated or freely cooling inelastic Boltzmann equation of
 // 001 (df/dt - beta Lap_v f = gamma Q_alpha(f), 001 eq. 1, B = rate |u|^lambda), time-step free as 001 sec. 4,
 // one replica of one species, spheres or disks: the tails of f resolved to densities far below 1/N (001 Remark
-// 10). The derivation, with the inelastic weight transfer: docs/derivations/swpm-inelastic.md.
+// 10). The derivation, with the inelastic weight transfer: docs/methods/derivations/swpm-inelastic.md.
 //
 // The particles (schemes/weighted_particles.hpp) represent nu = sum_k w_k delta(v - v_k), total weight 1.
 // A pair {i, j} collides at the rate 4 pi rate max(w_i, w_j) |v_i - v_j|^lambda; then the lighter partner,

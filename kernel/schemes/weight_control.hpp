@@ -1,5 +1,5 @@
 #pragma once
-// Where the weighted particles put their resolution (docs/derivations/swpm-inelastic.md, "Weight control"):
+// Where the weighted particles put their resolution (docs/methods/derivations/swpm-inelastic.md, "Weight control"):
 // every shell of the speed histogram (output.histogram) should hold about M = weights.particles_per_shell
 // particles. Shell s gets the target weight W_s = m_s / M, m_s its weight at the last control; shells beyond
 // the outermost populated one continue the targets geometrically. Two operations keep the particles near
@@ -16,7 +16,7 @@
 //    (1998) 382): mass, momentum and energy are kept to rounding whatever the unit vector e. e is chosen
 //    so that the pair also keeps the group's sum w |v|^4 (possible unless the group's speeds spread more
 //    than its directions allow): without it, each reduction pulled speeds together and a2 of 001's Maxwell
-//    gas at alpha = 1/2 came out 0.050 instead of 0.087 (docs/derivations/swpm-inelastic.md). Shells at or
+//    gas at alpha = 1/2 came out 0.050 instead of 0.087 (docs/methods/derivations/swpm-inelastic.md). Shells at or
 //    below 2 M particles, where the resolution is wanted, are never reduced.
 // Particles at or beyond the histogram's radius are neither split nor reduced.
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// The run plan: a validated Scene -> what runs, as types (docs/ARCHITECTURE.md). make_plan is
+// The run plan: a validated Scene -> what runs, as types (docs/developer-guide/architecture.md). make_plan is
 // the one function that branches on the scene's kinds (method, kernel, thermostat, shear, bath, storage);
 // the support check with its reason, the instantiation name, `--explain` with its cost estimate
 // (setup/explain.hpp) and the dispatch (setup/run_scene.hpp) all read the plan. The plan holds the
@@ -11,7 +11,7 @@
 // stepped_refusal and spread_refusal say which are not, at compile time, so the dispatch instantiates only the
 // supported ones and make_plan refuses the others with the same reason. Adding a collision kernel is one
 // evaluator file in collide/ and one alternative in KernelChoice, with its line in stepped_kernel and
-// event_plan (run_plan.cpp; docs/ARCHITECTURE.md, "Adding things").
+// event_plan (run_plan.cpp; docs/developer-guide/architecture.md, "Adding things").
 #include <stdexcept>
 #include <string>
 #include <tuple>

@@ -7,8 +7,8 @@
 
 #include "kernel/collide/enskog_chi.hpp"
 
-// Coefficients: output of docs/derivations/mixture_hcs.py (exact rational arithmetic), see
-// docs/derivations/mixture-hcs.md.
+// Coefficients: output of docs/methods/derivations/mixture_hcs.py (exact rational arithmetic), see
+// docs/methods/derivations/mixture-hcs.md.
 
 namespace granmc::theory {
 

@@ -15,7 +15,7 @@
 // p = 2, 4 (the factor 2 sqrt(2 pi) for spheres, sqrt(2 pi) for disks), P_p exactly bilinear in (a2_i, a2_j) with
 // polynomial coefficients (mixture_hcs.cpp; P_2 the same in both dimensions). Derived symbolically with
 // decorrelated pair coordinates and checked against independent quadrature (spheres) and Monte Carlo:
-// docs/derivations/mixture-hcs.md, docs/derivations/mixture_hcs.py [--dimension 2].
+// docs/methods/derivations/mixture-hcs.md, docs/methods/derivations/mixture_hcs.py [--dimension 2].
 
 namespace granmc::theory {
 
@@ -25,7 +25,7 @@ struct MixtureParameters {
   double mass[2], diameter[2], density[2];
   double alpha[2][2];  // restitution alpha_ij (symmetric)
   double chi[2][2];    // pair correlation at contact chi_ij (symmetric)
-  /// 3 spheres, 2 disks (docs/derivations/mixture-hcs.md, "Disks").
+  /// 3 spheres, 2 disks (docs/methods/derivations/mixture-hcs.md, "Disks").
   int dimension = 3;
 };
 

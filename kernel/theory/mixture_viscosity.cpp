@@ -3,9 +3,9 @@
 #include <cmath>
 #include <numbers>
 
-// Coefficients: docs/derivations/viscosity.py (exact), docs/derivations/viscosity.md, "Binary mixtures". For the
-// ordered pair (i, j): theta = T/m, s^2 = theta_i + theta_j, u = theta_i / s^2, v = theta_j / s^2 = 1 - u,
-// b = mu_ji (1 + alpha_ij), mu_ji = m_j / (m_i + m_j), m_ij = m_i m_j / (m_i + m_j).
+// Coefficients: docs/methods/derivations/viscosity.py (exact), docs/methods/derivations/viscosity.md, "Binary
+// mixtures". For the ordered pair (i, j): theta = T/m, s^2 = theta_i + theta_j, u = theta_i / s^2, v = theta_j / s^2 =
+// 1 - u, b = mu_ji (1 + alpha_ij), mu_ji = m_j / (m_i + m_j), m_ij = m_i m_j / (m_i + m_j).
 
 namespace granmc::theory {
 

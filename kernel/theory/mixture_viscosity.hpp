@@ -3,7 +3,7 @@
 // uniform chi_ij, first Sonine approximation around the HCS (or the Gaussian-thermostat HSS) with unequal partial
 // temperatures: the theory behind 000 Figs. 7-12 (000 refs. [7], [8]: Montanero & Garzo, PRE 67, 021308 (2003);
 // Garzo & Montanero, PRE 68, 041302 (2003)). Derived here from the Enskog equation, not transcribed:
-// docs/derivations/viscosity.md, "Binary mixtures" (every coefficient exact, checked by independent
+// docs/methods/derivations/viscosity.md, "Binary mixtures" (every coefficient exact, checked by independent
 // quadrature; identical species give kernel/theory/viscosity.hpp exactly; elastic limits give
 // Hirschfelder-Curtiss-Bird's dilute mixture and Thorne's Enskog mixture).
 //

@@ -6,9 +6,10 @@
 // (2 (1 + kappa)) and nu the smooth gas's collision frequency at T (theory::collision_frequency):
 //   dT/dt   = (nu / d)   {-(1 - alpha^2) T + 2 (d - 1) [-b T + b^2 (T + T_r / kappa)]},
 //   dT_r/dt = (nu / d_r) 2 (d - 1) (b / kappa) [-T_r + b (T + T_r / kappa)],     d_r = d (d - 1) / 2.
-// docs/derivations/rough-hcs.md derives them (docs/derivations/rough_hcs.py checks them by Monte Carlo).
+// docs/methods/derivations/rough-hcs.md derives them (docs/methods/derivations/rough_hcs.py checks them by Monte
+// Carlo).
 //
-// Binary mixtures (species i, j; docs/derivations/rough-hcs.md, "Mixtures"): with V2 = T_i / m_i + T_j / m_j,
+// Binary mixtures (species i, j; docs/methods/derivations/rough-hcs.md, "Mixtures"): with V2 = T_i / m_i + T_j / m_j,
 // W2 = (T_r,i / m_i + T_r,j / m_j) / kappa, mu = m_i m_j / (m_i + m_j) and the tangential factor
 // t = (1 + beta) / (1 + mu (1 / (kappa m_i) + 1 / (kappa m_j))) of collide/rough_rule.hpp, a collision of i with j
 // changes the kinetic energies of i on average by

@@ -55,7 +55,7 @@ MixtureParameters mixture_parameters(const Scene& scene) {
 }
 
 std::optional<MixturePrediction> mixture_state(const Scene& scene) {
-  // The mixture theory (docs/derivations/mixture-hcs.md) is that of spheres; for disks its Maxwellian balance.
+  // The mixture theory (docs/methods/derivations/mixture-hcs.md) is that of spheres; for disks its Maxwellian balance.
   if (scene.species.size() != 2 || !hcs_scaled_state(scene)) return std::nullopt;
   const MixtureParameters mp = mixture_parameters(scene);
   MixturePrediction p;

@@ -15,14 +15,14 @@ struct CoolingStatePrediction {
   double chi = 1.0;               // Carnahan-Starling chi (000 eq. 3), Henderson's for disks; 1 when dilute
   double a2 = 0.0;                // first-Sonine a2 (van Noije and Ernst 1998)
   double a2_model_error = 0.0;    // |second - first Sonine a2|: the first-Sonine truncation error
-  double a2_second_sonine = 0.0;  // second-Sonine a2 and a3 (docs/derivations/sonine-hcs.md)
+  double a2_second_sonine = 0.0;  // second-Sonine a2 and a3 (docs/methods/derivations/sonine-hcs.md)
   double a3_second_sonine = 0.0;
   double cooling_rate0 = 0.0;               // zeta at T(0) with the second-Sonine factor mu_2(a2, a3) / mu_2(0, 0)
   double cooling_rate0_first_sonine = 0.0;  // zeta at T(0) with the first-Sonine factor 1 + 3 a2 / 16
   double cooling_rate0_maxwell = 0.0;       // zeta at T(0) for a Maxwellian (a2 = a3 = 0)
-  double cooling_rate_model_error = 0.0;    // relative: bound on |zeta(t) / zeta_theory(t) - 1| (docs/physics.md)
-  double collision_frequency0 = 0.0;        // nu at T(0), Maxwellian (theory::collision_frequency)
-  std::vector<double> temperature;          // Haff's law with cooling_rate0 at the sample times
+  double cooling_rate_model_error = 0.0;  // relative: bound on |zeta(t) / zeta_theory(t) - 1| (docs/methods/physics.md)
+  double collision_frequency0 = 0.0;      // nu at T(0), Maxwellian (theory::collision_frequency)
+  std::vector<double> temperature;        // Haff's law with cooling_rate0 at the sample times
 };
 
 /// The HCS prediction if the scene is a monodisperse hard-sphere cooling state, else nothing.
@@ -32,11 +32,11 @@ std::optional<CoolingStatePrediction> cooling_state(const Scene& scene, const st
 struct ScaledStatePrediction {
   double a2 = 0.0;                // first Sonine (van Noije and Ernst 1998)
   double a2_model_error = 0.0;    // |second - first Sonine a2|
-  double a2_second_sonine = 0.0;  // docs/derivations/sonine-hcs.md
+  double a2_second_sonine = 0.0;  // docs/methods/derivations/sonine-hcs.md
   double a3_second_sonine = 0.0;
 };
 
-/// Two species: temperature ratio and a2_i (docs/derivations/mixture-hcs.md).
+/// Two species: temperature ratio and a2_i (docs/methods/derivations/mixture-hcs.md).
 struct MixturePrediction {
   double temperature_ratio_maxwell = 1.0;  // gamma = T_1/T_2 from zeta_1 = zeta_2, Maxwellians
   /// gamma with the first-Sonine corrections and the first-Sonine a2_i (c_i = 2 a2_i, 000 Fig. 1), spheres or

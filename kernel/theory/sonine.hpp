@@ -3,7 +3,7 @@
 // kurtosis cumulant a2 of the homogeneous cooling state and of the white-noise heated steady state (van Noije
 // and Ernst, Granular Matter 1 (1998) 57, linearised in a2, for any d), and the cooling rate with its Sonine
 // correction.
-// Formulas and their model error: docs/physics.md.
+// Formulas and their model error: docs/methods/physics.md.
 
 namespace granmc::theory {
 

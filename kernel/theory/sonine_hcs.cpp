@@ -6,8 +6,8 @@
 
 #include "kernel/theory/sonine.hpp"
 
-// Coefficients: output of docs/derivations/sonine_hcs.py (exact rational arithmetic), see
-// docs/derivations/sonine-hcs.md.  All moments are in units of sqrt(2 pi).
+// Coefficients: output of docs/methods/derivations/sonine_hcs.py (exact rational arithmetic), see
+// docs/methods/derivations/sonine-hcs.md.  All moments are in units of sqrt(2 pi).
 
 namespace granmc::theory {
 
@@ -72,7 +72,7 @@ MomentPoly mu6_poly(double al, int d) noexcept {
 /// d(d+2)(d+4)/8 (1 + 3 a2 - a3):
 ///  - the cooling state, mu_p = (p/d) mu_2 <c^p>: g4 = 1 + a2, g6 = 1 + 3 a2 - a3;
 ///  - white noise, mu_p = (p (p + d - 2) / d) mu_2 <c^(p - 2)> (the noise term (xi/2) Lap_c F, xi = mu_2 / d,
-///    against c^p): g4 = 1, g6 = 1 + a2 (docs/derivations/sonine-hcs.md, "White noise").
+///    against c^p): g4 = 1, g6 = 1 + a2 (docs/methods/derivations/sonine-hcs.md, "White noise").
 double f4(int d) noexcept { return d + 2.0; }
 double f6(int d) noexcept { return 3.0 * (d + 2.0) * (d + 4.0) / 4.0; }
 
@@ -152,8 +152,8 @@ SecondSonine hcs_second_sonine(double alpha, int dimension) noexcept {
   //   B_6 = 3 (1 + alpha)(1157 + 251 alpha + 2852 alpha^2 - 2340 alpha^3 + 280 alpha^4 - 280 alpha^5) / 256
   //   C_6 = 3 (1 + alpha)(280 alpha^5 - 280 alpha^4 + 3940 alpha^3 - 5476 alpha^2 + 3797 alpha - 8021) / 1024
   // Cramer's rule, common factors cancelled: a2 = 16 (1 - alpha) N2 / D, a3 = 128 (1 - alpha) N3 / D with the
-  // coefficients below (of alpha^0, alpha^1, ...; the disks' from docs/derivations/sonine_hcs.py --dimension 2).
-  // D > 0 on [0, 1]: its real roots are 1.510 and 2.028 for spheres, 1.291 and 1.642 for disks.
+  // coefficients below (of alpha^0, alpha^1, ...; the disks' from docs/methods/derivations/sonine_hcs.py --dimension
+  // 2). D > 0 on [0, 1]: its real roots are 1.510 and 2.028 for spheres, 1.291 and 1.642 for disks.
   struct Coefficients {
     std::array<double, 8> n2, n3;
     std::array<double, 9> d;

@@ -9,7 +9,7 @@
 // beta and zeta* the first-Sonine nu_eta* and zeta* of a Maxwellian (c0 = 0) in d dimensions,
 //   beta = (3 / (4 d)) (1 - alpha + 2 d / 3)(1 + alpha),  zeta* = ((d + 2) / (4 d)) (1 - alpha^2)
 // ((1 + alpha)(3 - alpha) / 4 and (5/12)(1 - alpha^2) for spheres, (1 + alpha)(7 - 3 alpha) / 8 and
-// (1 - alpha^2) / 2 for disks; docs/derivations/viscosity.md, "Disks"). The steady moment equations
+// (1 - alpha^2) / 2 for disks; docs/methods/derivations/viscosity.md, "Disks"). The steady moment equations
 // dP_ij/dt + a_ik P_kj + a_jk P_ki + Lambda_ij = 0 give
 //   P_yy = P_zz = p (1 - zeta*/beta),  P_xx = p (1 + (d - 1) zeta*/beta),  P_xy = -a* P_yy / beta,
 //   and, from the trace (energy balance), a*^2 = (d/2) zeta* beta^2 / (beta - zeta*), eta/eta0 = (beta - zeta*)/beta^2.

@@ -19,7 +19,7 @@ ShearViscosity shear_viscosity(double alpha, double phi, double chi, ViscosityRe
   const double e = 1.0 + alpha;
   ShearViscosity v;
   // Boltzmann-Enskog collision integral of the first Sonine f^(1) against the HCS f^(0), and the cooling
-  // rate, both reduced by nu0 = n T / eta0 (docs/derivations/viscosity.md, items 1-2, and "Disks"):
+  // rate, both reduced by nu0 = n T / eta0 (docs/methods/derivations/viscosity.md, items 1-2, and "Disks"):
   // nu_eta* = (3 / (4 d)) chi (1 - alpha + 2 d / 3)(1 + alpha)(1 - c0 / 64), zeta* = ((d + 2) / (4 d)) chi
   // (1 - alpha^2)(1 + 3 c0 / 32). For spheres 003's denominator (1/384) chi (1 + alpha) [16 (13 - alpha) -
   // 3 (4 - 3 alpha) c0] is nu_eta - zeta / 2.

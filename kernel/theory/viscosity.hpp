@@ -3,7 +3,7 @@
 // first Sonine approximation (003, "First Sonine approximation"; Garzo & Dufty, PRE 59, 5895 (1999) for the
 // cooling state, Garzo & Montanero, Physica A 313, 336 (2002) for the Gaussian thermostat), and the reduced
 // viscosity eta* of 000 Figs. 10-12. Every collision integral is re-derived exactly in
-// docs/derivations/viscosity.md (script docs/derivations/viscosity.py).
+// docs/methods/derivations/viscosity.md (script docs/methods/derivations/viscosity.py).
 //
 // In units of eta0 = (5 / (16 sigma^2)) sqrt(m T / pi) (003; elastic dilute, first Sonine) and of
 // nu0 = n T / eta0, with c0 = 2 a2 the HCS cumulant (003's c0 is 2 hcs_a2, van Noije-Ernst):
@@ -39,7 +39,8 @@ double elastic_dilute_viscosity(double mass, double diameter, double temperature
 /// 4) and contact value chi (phi = 0, chi = 1: the dilute Boltzmann gas). c0 = 2 hcs_a2(alpha, d). Disks
 /// (dimension 2): eta0 = ((d + 2) / 8) Gamma(d / 2) pi^(-(d - 1) / 2) sigma^(1 - d) sqrt(m T) = (1 / (2 sigma))
 /// sqrt(m T / pi), and the d-dimensional forms of the terms above (Brey, Dufty, Kim and Santos, PRE 58, 4638
-/// (1998) dilute; Garzo and Montanero, Physica A 313, 336 (2002) dense; docs/derivations/viscosity.md, "Disks"):
+/// (1998) dilute; Garzo and Montanero, Physica A 313, 336 (2002) dense; docs/methods/derivations/viscosity.md,
+/// "Disks"):
 ///   nu_eta* = (3 / (4 d)) chi (1 - alpha + 2 d / 3)(1 + alpha)(1 - c0 / 64),
 ///   zeta* = ((d + 2) / (4 d)) chi (1 - alpha^2)(1 + 3 c0 / 32),
 ///   eta^k / eta0 = [1 - (2^(d-2) / (d + 2)) phi chi (1 + alpha)(1 - 3 alpha)] / (nu_eta* - r zeta*),

@@ -48,7 +48,7 @@ double maxwell_white_noise_a2(double alpha, int dimension) noexcept {
 namespace {
 
 /// A polynomial in X = |G|^2, Y = |u|^2 and C = cos^2(G, u) of a colliding pair c1 = G + u/2, c2 = G - u/2
-/// (docs/derivations/vhs-white-noise-a2.md): the exponents (i, j, k) of X^i Y^j C^k and their coefficients.
+/// (docs/methods/derivations/vhs-white-noise-a2.md): the exponents (i, j, k) of X^i Y^j C^k and their coefficients.
 class PairPolynomial {
  public:
   PairPolynomial(double constant = 0.0) {  // NOLINT(google-explicit-constructor): a number is a polynomial
@@ -96,8 +96,8 @@ class PairPolynomial {
 }  // namespace
 
 SecondSonine isotropic_white_noise_second_sonine(double alpha, double lambda, int dimension) {
-  // docs/derivations/vhs-white-noise-a2.md, "Second Sonine"; docs/derivations/vhs_white_noise_a2.py does the same
-  // symbolically.
+  // docs/methods/derivations/vhs-white-noise-a2.md, "Second Sonine"; docs/methods/derivations/vhs_white_noise_a2.py
+  // does the same symbolically.
   const double d = dimension, a = 0.5 * (1.0 - alpha), b = 0.5 * (1.0 + alpha), s = a * a + b * b;
   const PairPolynomial x = PairPolynomial::monomial(1, 0, 0), y = PairPolynomial::monomial(0, 1, 0);
   const PairPolynomial z = PairPolynomial::monomial(1, 1, 1);  // (G.u)^2
@@ -117,7 +117,8 @@ SecondSonine isotropic_white_noise_second_sonine(double alpha, double lambda, in
   const PairPolynomial delta6 = 2.0 * (x * x * x + 0.75 * (x * x * u2) + (3.0 / 16.0) * (x * u4) + u6 * (1.0 / 64.0)) +
                                 6.0 * (x * gu2 + 0.25 * u2gu2) - sum6;
   // A_p = A_p0 + a2 A_p2 + a3 A_p3, A_pq = -(1/2) E[|u|^lambda Delta_p S_q]; E4 = A_4 - (d + 2) A_2,
-  // E6 = A_6 - (3/4)(d + 2)(d + 4) A_2 (1 + a2), linear in (a2, a3) (docs/derivations/sonine-hcs.md, "White noise")
+  // E6 = A_6 - (3/4)(d + 2)(d + 4) A_2 (1 + a2), linear in (a2, a3) (docs/methods/derivations/sonine-hcs.md, "White
+  // noise")
   const auto moments = [&](const PairPolynomial& delta) {
     return std::array<double, 3>{(-0.5 * delta).average(lambda, d), (-0.5 * (delta * s2)).average(lambda, d),
                                  (-0.5 * (delta * s3)).average(lambda, d)};
@@ -148,7 +149,7 @@ double white_noise_steady_temperature(double lambda, double rate, double alpha, 
 }
 
 double isotropic_white_noise_a2(double alpha, double lambda, int dimension) noexcept {
-  // docs/derivations/vhs_white_noise_a2.py: a2 = 16 (1 - alpha) N / D with
+  // docs/methods/derivations/vhs_white_noise_a2.py: a2 = 16 (1 - alpha) N / D with
   //   N = (d + 1)(d + 2 + lambda) alpha^2 - (d + 1)(d + 2) + (3 d - 1) lambda,
   //   D = D0 + lambda D1 + lambda^2 D2 + lambda^3 D3 (below).
   const double a = alpha, a2 = a * a, a3 = a2 * a, d = dimension, l = lambda;

@@ -1,4 +1,4 @@
-"""Opening granmc's HDF5 result files: the format version is checked first (docs/output-format.md).
+"""Opening granmc's HDF5 result files: the format version is checked first (docs/formats/output-format.md).
 
     from granmc import open_results
     with open_results("run.h5") as f:
@@ -31,6 +31,6 @@ def open_results(path):
     if major != FORMAT_MAJOR:
         f.close()
         raise FormatError(f"{path}: output format {major}.x, this reader knows {FORMAT_MAJOR}.x "
-                          f"(docs/output-format.md); rerun the scene with this granmc, or read it with the "
+                          f"(docs/formats/output-format.md); rerun the scene with this granmc, or read it with the "
                           f"scripts of the granmc that wrote it")
     return f

@@ -95,7 +95,7 @@ def values_key(values):
 
 def run_sweep(granmc, base_path, tables, sweep_dir, threads=None, mpi=None, writer="python/granmc"):
     """Runs `granmc sweep` in sweep_dir on the base scene file `base_path` with one [[scenes]] table per entry of
-    `tables` (each a dict of dotted keys to values, docs/scenes.md, "Sweep files"); `mpi`: that many ranks under
+    `tables` (each a dict of dotted keys to values, docs/formats/scenes.md, "Sweep files"); `mpi`: that many ranks under
     mpirun. granmc skips the scenes a previous call finished. Returns, in the order of `tables`, each scene's
     summary (a dict) and the path of its HDF5 file; exits naming the scene if one did not finish."""
     os.makedirs(sweep_dir, exist_ok=True)

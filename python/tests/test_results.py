@@ -1,4 +1,4 @@
-"""The package against a file granmc writes: the format check of open_results (docs/output-format.md), mean_ci
+"""The package against a file granmc writes: the format check of open_results (docs/formats/output-format.md), mean_ci
 against the file's own intervals (the C++ convention), scenes written as TOML and run once, sweeps, and their
 theory.
 

@@ -1,4 +1,4 @@
-"""docs/tutorial.md, executed: its ```sh blocks with bash and its ```python blocks with /usr/bin/python3, in order,
+"""docs/user-guide/tutorial.md, executed: its ```sh blocks with bash and its ```python blocks with /usr/bin/python3, in order,
 in a directory laid out as the checkout (build/bin/granmc, drivers/, python/, results/), each of which must
 succeed. Run by ctest (test_python) with GRANMC_EXECUTABLE set."""
 import os
@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-TUTORIAL = os.path.join(ROOT, "docs", "tutorial.md")
+TUTORIAL = os.path.join(ROOT, "docs", "user-guide", "tutorial.md")
 
 
 def blocks(text):

@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
 """The first-Sonine steady a2 of 001's kernel B = rate |u|^lambda with e uniform on the sphere or circle (Maxwell,
 VHS; collision rule 001 eq. 4) heated by white noise, in d dimensions, in closed form.  Derivation:
-docs/derivations/vhs-white-noise-a2.md.
+docs/methods/derivations/vhs-white-noise-a2.md.
 
 Run with /usr/bin/python3 (needs sympy).  Prints a2(alpha, lambda, d) and checks its two exact limits: lambda = 0
-is the exact a2 of Maxwell pseudomolecules (docs/derivations/maxwell-white-noise-a2.md), and lambda = 1, d = 3 is
-van Noije and Ernst's hard-sphere a2 (001's hard spheres scatter e uniformly: docs/physics.md).  Then the second
+is the exact a2 of Maxwell pseudomolecules (docs/methods/derivations/maxwell-white-noise-a2.md), and lambda = 1, d = 3 is
+van Noije and Ernst's hard-sphere a2 (001's hard spheres scatter e uniformly: docs/methods/physics.md).  Then the second
 Sonine approximation, linear in (a2, a3) as theory::second_sonine_linear does it for hard cores: a table, its
 values at alpha = 1/2 as exact rationals, and its checks (lambda = 1, d = 3 is the hard spheres' linear second
-Sonine of docs/derivations/sonine-hcs.md, "White noise"; lambda = 0 keeps the exact a2).
+Sonine of docs/methods/derivations/sonine-hcs.md, "White noise"; lambda = 0 keeps the exact a2).
 """
 import sympy as sp
 
@@ -91,7 +91,7 @@ for dd in (3, 2):
 
 # The second Sonine, F = phi (1 + a2 S2 + a3 S3), linear in (a2, a3): A_p = A_p0 + a2 A_p2 + a3 A_p3 with
 # A_pq = -(1/2) E[|u|^lambda Delta_p S_q-sum].  White noise adds to d/dt <|v|^6> the term beta 6 (d + 4) <|v|^4>, so
-# A_6 = (3/4)(d + 2)(d + 4) A_2 (1 + a2), linearised (docs/derivations/sonine-hcs.md, "White noise": E4, E6).
+# A_6 = (3/4)(d + 2)(d + 4) A_2 (1 + a2), linearised (docs/methods/derivations/sonine-hcs.md, "White noise": E4, E6).
 def moment_terms(delta):
     return [average_expanded(-delta / 2), average_expanded(-delta * S / 2), average_expanded(-delta * S3 / 2)]
 
@@ -110,7 +110,7 @@ def second_sonine(values):
     return sp.cancel((e4[2] * e6[0] - e4[0] * e6[2]) / det), sp.cancel((e4[0] * e6[1] - e4[1] * e6[0]) / det)
 
 
-# lambda = 1, d = 3: the hard spheres' linear second Sonine (docs/derivations/sonine-hcs.md's table, 5 decimals).
+# lambda = 1, d = 3: the hard spheres' linear second Sonine (docs/methods/derivations/sonine-hcs.md's table, 5 decimals).
 for aa, (h2, h3) in ((sp.Rational(1, 10), (0.06154, -0.00791)), (sp.Rational(1, 2), (0.02492, -0.00332)),
                      (sp.Rational(4, 5), (-0.00938, -0.00321)), (sp.Rational(9, 10), (-0.01246, -0.00291))):
     v2, v3 = second_sonine({d: 3, lam: 1, alpha: aa})

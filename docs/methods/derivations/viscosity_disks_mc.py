@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """Monte Carlo check of the d-general first-Sonine coefficients behind the shear viscosity of disks.
 
-Run:   /usr/bin/python3 docs/derivations/viscosity_disks_mc.py [--batches 200] [--nper 1000000] [--seed 11]
+Run:   /usr/bin/python3 docs/methods/derivations/viscosity_disks_mc.py [--batches 200] [--nper 1000000] [--seed 11]
        (needs numpy; about 10 minutes of one core with the defaults, which print the table of
-       docs/derivations/viscosity.md sec. 9; the a2 parts have heavy-tailed integrands, so fewer batches give
+       docs/methods/derivations/viscosity.md sec. 9; the a2 parts have heavy-tailed integrands, so fewer batches give
        a rougher standard error)
 
-What it checks (docs/derivations/viscosity.md sec. 9, kernel/theory/viscosity.cpp shear_viscosity in d = 2,
+What it checks (docs/methods/derivations/viscosity.md sec. 9, kernel/theory/viscosity.cpp shear_viscosity in d = 2,
 kernel/theory/steady_shear.cpp), one species, dilute, in d = 3 (as a control: the forms there are derived
 exactly in sec. 3) and d = 2, alpha in {1, 0.7}:
 

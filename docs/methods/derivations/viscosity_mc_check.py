@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """Independent Monte Carlo check of the binary-mixture shear-viscosity collision integrals.
 
-Run:   /usr/bin/python3 docs/derivations/viscosity_mc_check.py [--batches 32] [--nper 1000000] [--seed 20240611]
+Run:   /usr/bin/python3 docs/methods/derivations/viscosity_mc_check.py [--batches 32] [--nper 1000000] [--seed 20240611]
        (needs numpy and the granmc binary, default build/bin/granmc (run from the repository root), override with GRANMC=/path/to/granmc;
        about 2 minutes of one core with the default 32 batches of 1e6 samples = 3.2e7 samples per integral;
        --batches 16 halves it)
 
-What it checks (docs/derivations/viscosity.md sec. 6 "Binary mixtures", kernel/theory/mixture_viscosity.cpp,
+What it checks (docs/methods/derivations/viscosity.md sec. 6 "Binary mixtures", kernel/theory/mixture_viscosity.cpp,
 kernel/theory/mixture_hcs.cpp), dilute gas (phi = 0), mu = m1/m2 = 4, delta = n1/n2 = 1,
 omega = sigma1/sigma2 in {0.5, 1, 2}, alpha in {1, 0.8, 0.7}:
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """Monte Carlo check of the Maxwellian temperature ratio of a binary mixture of hard disks.
 
-Run:   /usr/bin/python3 docs/derivations/mixture_disks_mc.py [--batches 40] [--nper 1000000] [--seed 3]
+Run:   /usr/bin/python3 docs/methods/derivations/mixture_disks_mc.py [--batches 40] [--nper 1000000] [--seed 3]
        (needs numpy and the granmc binary, default build/bin/granmc from the repository root, or GRANMC=...;
        about 5 minutes of one core)
 
-What it checks (docs/derivations/mixture-hcs.md, "Disks"; kernel/theory/mixture_hcs.cpp with dimension 2): at
+What it checks (docs/methods/derivations/mixture-hcs.md, "Disks"; kernel/theory/mixture_hcs.cpp with dimension 2): at
 the gamma = T_1 / T_2 that `granmc theory` prints for a cooling mixture of disks (temperature_ratio_maxwell)
 and its chi_ij (jenkins_mancini_chi when dense), the Maxwellian partial cooling rates of the two species,
 computed here by Monte Carlo straight from the collision rule in the plane, are equal:

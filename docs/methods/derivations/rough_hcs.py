@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Energy production rates of inelastic rough hard spheres (d = 3) and disks (d = 2) in the Maxwellian
 approximation, the cooling state's temperature ratio theta = T_rot / T_tr, and the steady theta under white
-noise acting on translation only.  Derivation: docs/derivations/rough-hcs.md.
+noise acting on translation only.  Derivation: docs/methods/derivations/rough-hcs.md.
 
 Run with /usr/bin/python3 (needs sympy and numpy): `rough_hcs.py` prints the rates (exact, from the moments
 below) and a table of theta and the reduced cooling rate; `--mc` checks the per-collision energy changes by

@@ -4,7 +4,7 @@
 coefficients.
 
 Run with /usr/bin/python3 (needs sympy): `sonine_hcs.py [--dimension 2]` (default 3), with `--quad` or
-`--mc` for the independent checks of the moments.  Derivation: docs/derivations/sonine-hcs.md.
+`--mc` for the independent checks of the moments.  Derivation: docs/methods/derivations/sonine-hcs.md.
 
     mu_p = -int dc c^p I[F,F]
          = -(1/2) int dc1 dc2 dsigma Theta(sigma.g) (sigma.g) F(c1) F(c2) [c1'^p + c2'^p - c1^p - c2^p],

@@ -4,7 +4,7 @@ equation with uniform chi_ij: exact collisional moments of the first-Sonine dist
 temperature ratio gamma = T_1/T_2 and cumulants a2_i (c_i = 2 a2_i of paper 000) in the Maxwellian and
 the linear first-Sonine approximations.
 
-Run with /usr/bin/python3 (needs sympy, numpy, scipy).  Derivation: docs/derivations/mixture-hcs.md.
+Run with /usr/bin/python3 (needs sympy, numpy, scipy).  Derivation: docs/methods/derivations/mixture-hcs.md.
     python3 mixture_hcs.py           symbolic derivation, exact checks, tables (about 6 s)
     python3 mixture_hcs.py --quad    independent deterministic quadrature of every coefficient
     python3 mixture_hcs.py --mc      independent Monte Carlo of every coefficient (about 2 min)
@@ -49,7 +49,7 @@ u, b, ai, aj, alpha = sp.symbols("u b a_i a_j alpha")
 w1s, w2s = sp.symbols("w1 w2")  # stand for 1/u and 1/(1-u) inside the ring
 
 
-# --dimension 2: hard disks (docs/derivations/mixture-hcs.md, "Disks"): two Cartesian components (x, z), the
+# --dimension 2: hard disks (docs/methods/derivations/mixture-hcs.md, "Disks"): two Cartesian components (x, z), the
 # sigma integral 2 pi times the integrand at sigma = z, S2 = L^(d/2-1)_2.
 DIM = 2 if "--dimension" in sys.argv and sys.argv[sys.argv.index("--dimension") + 1] == "2" else 3
 SPHERE = 4 if DIM == 3 else 2  # |S^(d-1)| / pi

@@ -2,7 +2,7 @@
 """First-Sonine Navier-Stokes shear viscosity of inelastic hard spheres (d = 3, Enskog equation, uniform chi):
 every collision integral that enters 003's eta^k and eta, evaluated exactly and compared with 003's closed
 forms; then the same for a binary mixture with unequal partial temperatures (000 Figs. 7-12), with its limits.
-Derivation: docs/derivations/viscosity.md.  Code: kernel/theory/viscosity.*, kernel/theory/mixture_viscosity.*.
+Derivation: docs/methods/derivations/viscosity.md.  Code: kernel/theory/viscosity.*, kernel/theory/mixture_viscosity.*.
 
 Run with /usr/bin/python3 (needs sympy, numpy; imports mixture_hcs.py from this directory).
     python3 viscosity.py            symbolic derivation, comparison with 003, mixture checks (about 25 s)
@@ -31,7 +31,7 @@ from sympy.polys.domains import QQ
 from sympy.polys.rings import ring
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import mixture_hcs as mh  # noqa: E402  (pair coordinates of the mixture, docs/derivations/mixture-hcs.md)
+import mixture_hcs as mh  # noqa: E402  (pair coordinates of the mixture, docs/methods/derivations/mixture-hcs.md)
 
 R, Gx, Gy, Gz, gx, gy, gz, AL, A2 = ring("Gx,Gy,Gz,gx,gy,gz,alpha,a2", QQ)
 alpha, a2 = sp.symbols("alpha a2")
@@ -256,7 +256,7 @@ def quadrature_check(al=0.6, a=0.3):
 # ---------------------------------------------------------------------------------------------------------
 # Binary mixture (Enskog, uniform chi_ij), species i, j with their own temperatures T_i (HCS or HSS)
 # ---------------------------------------------------------------------------------------------------------
-# Pair coordinates of docs/derivations/mixture-hcs.md (imported from mixture_hcs.py): in units of
+# Pair coordinates of docs/methods/derivations/mixture-hcs.md (imported from mixture_hcs.py): in units of
 # s = sqrt(theta_i + theta_j), v1 = G + u g, v2 = G - (1-u) g, G ~ N(0, u(1-u)), g ~ N(0, 1) independent,
 # u = theta_i / s^2, v1' = v1 - b (sig.g) sig with b = mu_ji (1 + alpha_ij), x1 = v1^2/(2 theta_i) = |v1|^2 w1 / 2,
 # w1 = 1/u, w2 = 1/(1-u).  f_i0 = n_i phi_i W_i, W_i = 1 + a_i S2(x1); d f_i0 / dv = n_i phi_i w_i(v),
@@ -337,7 +337,7 @@ class Pair:
 
 
 def mixture_viscosity(NUMC, m, sig, n, nE, chi, alpha_, T, a, zeta, r):
-    """Assembly (docs/derivations/viscosity.md): returns (eta^k_i list, eta^c1, eta^c0).  n: number densities of the
+    """Assembly (docs/methods/derivations/viscosity.md): returns (eta^k_i list, eta^c1, eta^c0).  n: number densities of the
     Boltzmann part (only their ratio matters); nE: the densities in the Enskog terms (x_i n with
     n = 6 phi / (pi sum_k x_k sigma_k^3); zero when dilute).  r = 1/2 (cooling) or 1 (Gaussian thermostat);
     T = (T_1, T_2) the partial temperatures; a = (a_1, a_2); zeta the cooling rate at the densities n."""
@@ -581,7 +581,7 @@ def mixture_quadrature(C, points=((2.0, 1.0, 1.3, 1.0, 0.7, 0.2, -0.1), (1.0, 10
 
 
 def mixture_tables(NUM, NUMC):
-    """Tables of docs/derivations/viscosity.md: 000 Figs. 6-12 (Gaussian thermostat, the HSS of 000)."""
+    """Tables of docs/methods/derivations/viscosity.md: 000 Figs. 6-12 (Gaussian thermostat, the HSS of 000)."""
     f5 = mh.f5
     print("\n### Fig. 6: one species, phi = 0\n")
     print("| alpha | c0 = 2 a2 | eta/eta0 HCS (a) | eta/eta0 HSS (b) |")

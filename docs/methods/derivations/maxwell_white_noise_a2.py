@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The exact steady a2 of Maxwell pseudomolecules heated by white noise (001's kernel B = rate, e uniform on the
 sphere or circle, collision rule 001 eq. 4) in d dimensions, in closed form.  Derivation:
-docs/derivations/maxwell-white-noise-a2.md.
+docs/methods/derivations/maxwell-white-noise-a2.md.
 
 Run with /usr/bin/python3 (needs sympy).  Prints a2(alpha, d) and checks it for spheres (2/23 at alpha = 1/2)
 and disks (18/167).
