@@ -11,15 +11,12 @@ figure is the summary's wall_seconds per collision (set-up included); the script
 collisions per second and, per pair, the ratio of the median costs per collision and the range of the
 run-by-run ratios. Results: docs/developer-guide/performance.md, "What each model costs".
 """
-import argparse
 import os
 import statistics
 import sys
-import tempfile
 
-from thread_scaling import run
+from whole_runs import ROOT, parser, run, work_directory
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = os.path.join(ROOT, "drivers", "scenes", "model_cost")
 PAIRS = [  # the model, its reference
     ("rough_spheres", "spheres"),
@@ -29,13 +26,8 @@ PAIRS = [  # the model, its reference
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--granmc", default=os.path.join(ROOT, "build", "bin", "granmc"))
-    p.add_argument("--runs", type=int, default=3)
-    p.add_argument("--work", default=None, help="directory for the files (default: a temporary one)")
-    args = p.parse_args()
-    work = args.work or tempfile.mkdtemp(prefix="granmc-models-")
-    os.makedirs(work, exist_ok=True)
+    args = parser(__doc__).parse_args()
+    work = work_directory(args, "granmc-models-")
     print("| model / reference | collisions/s, model | collisions/s, reference | cost per collision, ratio of the "
           "medians | run-by-run ratios |")
     print("|---|---|---|---|---|")

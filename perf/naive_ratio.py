@@ -14,18 +14,15 @@ collisions per particle and step of both in the last run: the same physics, so t
 their initial temperatures (neither rescales its Maxwellian sample to T = 1: the rate moves by about
 sqrt(2 / (3 N)) / 2, 4 10^-4 at N = 10^6, in each).
 """
-import argparse
 import json
 import os
 import statistics
 import subprocess
 import sys
-import tempfile
 import tomllib
 
-from thread_scaling import run
+from whole_runs import ROOT, parser, run, work_directory
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = os.path.join(ROOT, "drivers", "scenes", "scaling")
 
 
@@ -38,14 +35,10 @@ def naive(binary, scene):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--granmc", default=os.path.join(ROOT, "build", "bin", "granmc"))
+    p = parser(__doc__)
     p.add_argument("--naive", default=os.path.join(ROOT, "build", "bin", "naive_run"))
-    p.add_argument("--runs", type=int, default=3)
-    p.add_argument("--work", default=None, help="directory for granmc's files (default: a temporary one)")
     args = p.parse_args()
-    work = args.work or tempfile.mkdtemp(prefix="granmc-naive-")
-    os.makedirs(work, exist_ok=True)
+    work = work_directory(args, "granmc-naive-")
     print("| particles | granmc collisions/s | naive collisions/s | ratio of the medians | run-by-run ratios "
           "| collisions per particle and step, granmc / naive |")
     print("|---|---|---|---|---|---|")

@@ -13,16 +13,14 @@ on two, which made back to back share the machine's state of the moment), and fo
 replica the rounds' counts. --only REGEX keeps the scenes whose file name matches. It also checks that the two-thread files hold the bits of the one-thread files
 (tests/same_bits.py --files), and exits with status 1 if they do not.
 """
-import argparse
-import json
 import os
 import re
 import statistics
 import subprocess
 import sys
-import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from whole_runs import ROOT, parser, run, work_directory
+
 SCENES = os.path.join(ROOT, "drivers", "scenes", "scaling")
 CASES = [  # scene, the two-thread run's extra arguments, what it measures
     ("one_replica_1e7.toml", ["--threads-per-replica", "2"], "one replica of 10^7, 2 threads inside it"),
@@ -33,22 +31,11 @@ CASES = [  # scene, the two-thread run's extra arguments, what it measures
 ]
 
 
-def run(granmc, scene, threads, extra, out):
-    subprocess.run([granmc, "run", scene, "--threads", str(threads), "--quiet", "--out", out + ".h5",
-                    "--summary", out + ".json"] + extra, check=True)
-    with open(out + ".json") as f:
-        return json.load(f)
-
-
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--granmc", default=os.path.join(ROOT, "build", "bin", "granmc"))
-    p.add_argument("--runs", type=int, default=3)
-    p.add_argument("--work", default=None, help="directory for the files (default: a temporary one)")
+    p = parser(__doc__)
     p.add_argument("--only", default="", help="run only the scenes whose file name matches this regular expression")
     args = p.parse_args()
-    work = args.work or tempfile.mkdtemp(prefix="granmc-threads-")
-    os.makedirs(work, exist_ok=True)
+    work = work_directory(args, "granmc-threads-")
     same = True
     print("| scene | 1 thread (s) | 2 threads (s) | speed-up of the medians | paired ratios: median [range] "
           "| rounds, deferred, rerun in order |")
