@@ -18,7 +18,7 @@ packages=(
   cmake g++ make libgomp1
   libxsimd-dev libhdf5-dev librandom123-dev libtomlplusplus-dev libcli11-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
-  python3 python3-matplotlib python3-h5py python3-pytest
+  python3 python3-matplotlib python3-h5py python3-pytest python3-pip python3-venv python3-setuptools python3-wheel
   clang-format python3-pyflakes
 )
 if [ "$with_mpi" = 1 ]; then packages+=(openmpi-bin libopenmpi-dev); fi

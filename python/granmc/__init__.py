@@ -10,7 +10,8 @@ The modules:
 - `scenes`: a scene dict as TOML text; runs through `granmc run` cached by that text, many scenes as one
   `granmc sweep`; what `granmc theory` prints for a scene;
 - `plotting`: matplotlib in one style.
-The scripts in drivers/ import the package through the link drivers/granmc; elsewhere put python/ on PYTHONPATH.
+The scripts in drivers/ import the package through the link drivers/granmc; elsewhere put python/ on PYTHONPATH
+or install it: `python3 -m pip install ./python` (python/pyproject.toml).
 """
 from granmc.replicas import LAMBDA_P, mean_ci
 from granmc.results import FORMAT_MAJOR, FormatError, open_results
