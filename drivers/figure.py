@@ -8,7 +8,7 @@ A figure file (drivers/scenes/<paper>_fig<k>/figure.toml) names a base scene (a 
 same folder), the swept parameter, its simulated values, the curves (per curve: species overrides,
 `set` of dotted scene keys, or a base scene of its own) and what is plotted. The script makes the scene of
 every simulated point, then runs all the points of one base scene as one `granmc sweep`
-(docs/developer-guide/scaling.md, "Sweeps"): each point is a [[scenes]] table of the dotted keys where its scene differs
+(docs/user-guide/parallel-runs.md, "Sweeps"): each point is a [[scenes]] table of the dotted keys where its scene differs
 from the base (`"collision.restitution" = 0.7`, `"species[0].diameter" = 0.5`), written to
 OUT/points/sweep.toml with a copy of the base beside it (a curve with a base of its own gets
 OUT/points/<base stem>/). The sweep writes NAME.h5, NAME.json and index.json there; a rerun skips the

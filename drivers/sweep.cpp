@@ -267,7 +267,7 @@ int sweep_command(const SweepArgs& args) {
     std::size_t ran = 0;
     double spent = 0.0;
     // More ranks than the largest scene has replicas would leave ranks idle: then whole scenes go to groups
-    // of ranks (docs/developer-guide/scaling.md, "Over MPI ranks").
+    // of ranks (docs/user-guide/parallel-runs.md, "Over MPI ranks").
     int most_replicas = 1;
     for (std::size_t k = 0; k < count; ++k)
       if (!done[k]) most_replicas = std::max(most_replicas, sweep.scenes[k].scene.run.replicas);

@@ -5,7 +5,8 @@
 // scene with its values, files, status (done or pending) and the hash of the scene text it runs; rank 0
 // rewrites it (temporary name, then rename) before the first scene and after each one. A rerun skips the
 // scenes that index.json records as done with the same scene hash and whose two files exist, and removes
-// the temporary files (NAME.tmp-PID) an interrupted run left of its outputs. docs/developer-guide/scaling.md, "Sweeps".
+// the temporary files (NAME.tmp-PID) an interrupted run left of its outputs.
+// docs/user-guide/parallel-runs.md, "Sweeps".
 #include <string>
 
 namespace granmc {

@@ -110,7 +110,7 @@ std::vector<OutputRecord> declare() {
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.threads); });
   add("threads_per_replica", K::count, S, "",
       "of the threads, each replica's own: the time-stepped scheme's concurrent collision rounds "
-      "(docs/developer-guide/scaling.md)",
+      "(docs/user-guide/parallel-runs.md)",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.threads_per_replica); });
   // The concurrent rounds' counts (observe/gas_series.hpp), present when the replicas had threads inside them.
   const auto round_count = [](std::uint64_t CollisionRoundCounts::*count) {

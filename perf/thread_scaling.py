@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Wall time of `granmc run` on one thread and on two, for the tables of docs/developer-guide/scaling.md ("Threads inside one
-replica"): one replica of 10^7, 10^6 and 10^5 particles with its two threads inside it (--threads-per-replica
-2), and two replicas of 10^7 and of 10^6 with one thread each.
+"""Wall time of `granmc run` on one thread and on two, for the tables of docs/developer-guide/scaling.md
+("Concurrent collision rounds"): one replica of 10^7, 10^6 and 10^5 particles with its two threads inside it
+(--threads-per-replica 2), and two replicas of 10^7 and of 10^6 with one thread each.
 
 Usage: /usr/bin/python3 perf/thread_scaling.py [--granmc build/bin/granmc] [--runs 3] [--work DIR]
        (`make bench-threads`; about 2 minutes per run on this 2-core host)

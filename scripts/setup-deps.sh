@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages granmc needs, skipping those already present.
 # Used by `make run`, `make test` and `make bench`; safe to run again (it does nothing when all are there).
-# MPI (OpenMPI, for replicas over ranks, docs/developer-guide/scaling.md) is opt-in: `scripts/setup-deps.sh --mpi` or
+# MPI (OpenMPI, for replicas over ranks, docs/user-guide/parallel-runs.md) is opt-in: `scripts/setup-deps.sh --mpi` or
 # GRANMC_MPI=1 (also ON) adds openmpi-bin and libopenmpi-dev; `make mpi` and `make test` ask for it.
 set -euo pipefail
 

@@ -359,8 +359,8 @@ particles_per_shell = 8
                                      "/weights/particles", "/weights@reductions", "/counters/rescales"});
 }
 
-/// `granmc sweep` under mpirun (docs/developer-guide/scaling.md, "Over MPI ranks"): the same index and, scene by scene,
-/// the same files as one process; only rank 0 writes; a rerun skips every scene.
+/// `granmc sweep` under mpirun (docs/user-guide/parallel-runs.md, "Over MPI ranks"): the same index and, scene by
+/// scene, the same files as one process; only rank 0 writes; a rerun skips every scene.
 TEST_F(MpiRun, SweepOverRanksMatchesOneProcessAndResumes) {
   write("base.toml", cooling_scene);
   write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.6, 0.8]\nrun.seed = [1, 2]\n");
@@ -382,7 +382,7 @@ TEST_F(MpiRun, SweepOverRanksMatchesOneProcessAndResumes) {
 }
 
 /// More ranks than a scene has replicas: 4 ranks and scenes of 2 replicas make 2 groups of 2 ranks, each
-/// running whole scenes (docs/developer-guide/scaling.md); the files are those of one process.
+/// running whole scenes (docs/user-guide/parallel-runs.md); the files are those of one process.
 TEST_F(MpiRun, SweepGivesWholeScenesToGroupsOfRanks) {
   write("base.toml", edited(cooling_scene, {{"replicas = 5", "replicas = 2"}}));
   write("alpha.toml", "base = \"base.toml\"\n[grid]\n\"collision.restitution\" = [0.5, 0.6, 0.8]\nrun.seed = [1, 2]\n");

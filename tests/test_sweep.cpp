@@ -1,4 +1,4 @@
-// `granmc sweep` (docs/formats/scenes.md "Sweep files", docs/developer-guide/scaling.md "Sweeps"): a grid writes one
+// `granmc sweep` (docs/formats/scenes.md "Sweep files", docs/user-guide/parallel-runs.md "Sweeps"): a grid writes one
 // HDF5 file and summary per scene and an index, with the numbers `granmc run` writes for the same scene; a sweep killed
 // mid-scene leaves nothing under the unfinished scene's names, and its rerun skips the finished scene
 // (files untouched), removes stale temporary files and completes the rest; an edited base reruns; a bad

@@ -1,6 +1,6 @@
 #pragma once
 // The collision backend of one system spread over several ranks (`--spread particles`; docs/developer-guide/scaling.md,
-// "One system over several ranks"): for a system larger than one machine's memory. The time stepper
+// "The spread stage"): for a system larger than one machine's memory. The time stepper
 // (schemes/dsmc.hpp) is the same as in one process; this backend holds the particles, the collision stage
 // and the sums over particles. One species, smooth or rough (the spins of a partner held elsewhere travel with
 // its velocity); the effects that act on particles act on this rank's part.

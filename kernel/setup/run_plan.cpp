@@ -36,7 +36,7 @@ constexpr const char* supported_list =
 [[noreturn]] void refuse_spread(const std::string& what) {
   throw PlanRefusal("one system over several ranks (--spread particles) is not implemented for " + what +
                     "; it runs method \"dsmc\" with one species, any kernel and packing_fraction, any thermostat, "
-                    "double storage (docs/developer-guide/scaling.md)");
+                    "double storage (docs/user-guide/parallel-runs.md)");
 }
 
 StorageChoice storage_choice(const Scene& scene) {
