@@ -237,7 +237,7 @@ portable-test: setup
 	cmake --build $(PORTABLE_BUILD) -j $(JOBS) --target test_core test_numerics test_event_scheme
 	ctest --test-dir $(PORTABLE_BUILD) --output-on-failure -R '^(test_core|test_numerics|test_event_scheme)$$'
 
-# Replicas over MPI ranks (docs/developer-guide/scaling.md), built apart in $(MPI_BUILD) with GRANMC_MPI=ON: `make mpi`, then
+# Replicas over MPI ranks (docs/user-guide/parallel-runs.md), built apart in $(MPI_BUILD) with GRANMC_MPI=ON: `make mpi`, then
 # `mpirun -np R $(MPI_BUILD)/bin/granmc run SCENE ...`. The default set-up does not install MPI.
 mpi-setup:
 	@bash scripts/setup-deps.sh --mpi
@@ -293,7 +293,7 @@ bench-baseline: build
 clean:
 	rm -rf $(BUILD) $(MPI_BUILD) $(PORTABLE_BUILD) $(SANITIZE_BUILD)
 
-# Issue 7's stability study: the fast hard cases (ctest -L stability), then the long versions at full size
+# The stability study: the fast hard cases (ctest -L stability), then the long versions at full size
 # (drivers/scenes/stability/, checks and table in results/stability/table.md; about 4 min), then checkpoints under
 # SIGKILL and a full disk (tests/fault_injection.py, about 40 s).
 stability: build

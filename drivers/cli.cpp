@@ -94,12 +94,12 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
   std::string absent;
   for (const std::string& a : what.absent) absent += (absent.empty() ? "" : ", ") + a;
   if (!absent.empty()) std::printf("not compiled %s (the scene does not name them)\n", absent.c_str());
-  if (plan.spread == Spread::particles) {  // docs/developer-guide/scaling.md, "One system over several ranks"
+  if (plan.spread == Spread::particles) {  // docs/user-guide/parallel-runs.md, "One system over several ranks"
     const double n = static_cast<double>(total_particles(full_scene));
     std::printf(
         "spread       every replica is one system over %d rank(s), the replicas one after another on one "
         "thread per rank; per rank %.1f MB of particles and at most %.0f MB of candidate list; it takes "
-        "2-3x the time of one process for each replica (docs/developer-guide/scaling.md)\n",
+        "2-3x the time of one process for each replica (docs/user-guide/parallel-runs.md)\n",
         at.size, n * static_cast<double>(what.bytes_per_particle) / at.size / 1e6,
         static_cast<double>(spread_segment * spread_candidate_bytes) / 1e6);
     return exit_ok;
@@ -120,13 +120,13 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
     std::printf(
         "threads      %d replica(s) at a time, each on %d threads: the collision stage in concurrent rounds, the "
         "same bits as on one; faster for replicas of millions of particles, slower for small ones "
-        "(docs/developer-guide/scaling.md)\n",
+        "(docs/user-guide/parallel-runs.md)\n",
         what.replicas_in_flight, what.threads_per_replica);
   else if (threads > what.replicas_in_flight)
     std::printf("threads      %d replica(s) at a time, one thread each; %d thread(s) idle%s\n", what.replicas_in_flight,
                 threads - what.replicas_in_flight,
                 what.threads_inside
-                    ? " (--threads-per-replica puts them inside the replicas, docs/developer-guide/scaling.md)"
+                    ? " (--threads-per-replica puts them inside the replicas, docs/user-guide/parallel-runs.md)"
                     : " (this scheme runs a replica on one thread)");
   else
     std::printf("threads      %d replicas at a time, one thread each\n", what.replicas_in_flight);
@@ -326,13 +326,14 @@ int cli_main(int argc, char** argv) {
   CLI::App* run_cmd = app.add_subcommand("run", "Run a scene and write its results (HDF5, optional JSON summary)");
   run_cmd->add_option("scene", run.scene, "Scene file (TOML, see docs/formats/scenes.md)")->required();
   run_cmd->add_option("--out", run.out, "HDF5 output file (default: <scene name>.h5 in the current directory)");
-  run_cmd->add_option("--summary", run.summary, "Also write the JSON summary of SCENES.md to this file");
+  run_cmd->add_option("--summary", run.summary,
+                      "Also write the JSON summary (docs/formats/output-format.md) to this file");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   run_cmd
       ->add_option("--threads-per-replica", run.threads_per_replica,
                    "At most this many threads inside one replica, for threads the replicas leave over (time-stepped "
                    "scheme: the collision stage in concurrent rounds, the same bits; default 1: "
-                   "docs/developer-guide/scaling.md)")
+                   "docs/user-guide/parallel-runs.md)")
       ->check(CLI::Range(1, 4096));
   run_cmd->add_option("--seed", run.seed, "Override the scene's run.seed");
   run_cmd->add_flag("--quiet", run.quiet, "No progress line and no closing message");
@@ -340,7 +341,7 @@ int cli_main(int argc, char** argv) {
       ->add_option("--spread", run.spread,
                    "What the MPI ranks share: \"replicas\" (default: each rank runs its replicas) or \"particles\" "
                    "(each replica is one system spread over all ranks, for systems larger than one machine; "
-                   "docs/developer-guide/scaling.md)")
+                   "docs/user-guide/parallel-runs.md)")
       ->check(CLI::IsMember({"replicas", "particles"}));
   run_cmd->add_option(
       "--resume", run.resume,
@@ -371,7 +372,7 @@ int cli_main(int argc, char** argv) {
   sweep_cmd
       ->add_option("--threads-per-replica", sweep.threads_per_replica,
                    "As for granmc run: at most this many threads inside one replica (default 1: "
-                   "docs/developer-guide/scaling.md)")
+                   "docs/user-guide/parallel-runs.md)")
       ->check(CLI::Range(1, 4096));
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress lines, no notes on skipped scenes, no closing message");
   sweep_cmd->add_flag("--keep-other-builds", sweep.keep_other_builds,

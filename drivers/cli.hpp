@@ -1,7 +1,7 @@
 #pragma once
 // The granmc command line (CLI11): `granmc run`, `granmc sweep`, `granmc theory`. Exit status: 0 success,
-// 2 bad scene, sweep file or arguments (one message on stderr, no output files), 1 failure during the run
-// (SCENES.md).
+// 2 bad scene, sweep file or arguments (one message on stderr, no output files), 1 failure during the run,
+// 3 interrupted (docs/user-guide/command-line.md, "Exit status").
 
 namespace granmc {
 

@@ -24,7 +24,7 @@ namespace granmc {
 
 namespace {
 
-// The keys of every table, in the order of SCENES.md (the order the messages list them in).
+// The keys of every table, in the order of docs/formats/scenes.md (the order the messages list them in).
 constexpr std::string_view kTopLevel[] = {"run",        "species", "collision", "thermostat", "shear",
                                           "relaxation", "initial", "intruder",  "output",     "weights"};
 constexpr std::string_view kTopLevelLabels =

@@ -1,6 +1,6 @@
 #pragma once
 // Scene files: TOML text -> validated granmc::Scene. This is the only place that checks a scene (the
-// contract is SCENES.md; every key, default and rule is documented in docs/formats/scenes.md). Everything
+// scene contract: every key, default and rule is documented in docs/formats/scenes.md). Everything
 // downstream may assume the invariants stated in kernel/core/scene.hpp.
 #include <stdexcept>
 #include <string>

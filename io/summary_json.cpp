@@ -63,7 +63,7 @@ nlohmann::json to_json(const RecordValue& value) {
 nlohmann::json summary_json(const Scene& scene, const RunResult& result, const RunReport& report) {
   const RunOutput output{scene, result, report};
   nlohmann::json j = nlohmann::json::object();
-  j["species"] = nlohmann::json::array();  // SCENES.md: present, empty for an intruder scene
+  j["species"] = nlohmann::json::array();  // the scene contract: present, empty for an intruder scene
   const std::string species_mark = "{species}";
   const std::vector<std::size_t> sample_times = summary_sample_indices(result.times.size());
   for (const OutputRecord& record : output_records()) {

@@ -1,8 +1,9 @@
 #pragma once
 // The JSON summary of a run (`granmc run --summary FILE.json`): the records of the output schema marked for
 // the summary (io/output_schema.hpp, docs/formats/output-format.md), under the names they have in the HDF5 file. The
-// names SCENES.md fixes ("Summary": scene, seed, replicas, method, wall_seconds, collisions, times,
-// temperature, species [{name, temperature, a2}], temperature_ratio, viscosity, intruder) are among them.
+// names the scene contract fixes (docs/formats/scenes.md, "What a run writes": scene, seed, replicas, method,
+// wall_seconds, collisions, times, temperature, species [{name, temperature, a2}], temperature_ratio, viscosity,
+// intruder) are among them.
 //
 // A record over the sample times (times, temperature, the species' series, ...) is in the summary at no more
 // than summary_sample_times_max of them (io/output_schema.hpp: every summary_stride-th and the last); the

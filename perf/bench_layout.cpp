@@ -1,4 +1,4 @@
-// The measurement that decides the velocity layout of SpeciesStore (DESIGN.md, Particles): random pair
+// The measurement that decides the velocity layout of SpeciesStore (kernel/core/species_store.hpp): random pair
 // gather + scatter, as the collision stage does it, with one array per component (SoA: x[], y[], z[])
 // against packed 32-byte records (x, y, z, aux), at N = 10^5 (fits in L2 + L3) and N = 10^7 (does not);
 // and, with prefetch, packed 16-byte float records (run.storage = "float") against the double ones.

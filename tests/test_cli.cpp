@@ -1,6 +1,6 @@
 // The command line: a bad scene or bad arguments exit with status 2 before any work, with one message
 // on stderr naming the file and the key, and leave no output file; a good run exits 0 and writes both
-// outputs atomically (SCENES.md, "Command line").
+// outputs atomically (docs/user-guide/command-line.md).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -333,7 +333,7 @@ TEST_F(Cli, UnsupportedCombinationExitsTwoSayingWhatIsSupported) {
 }
 
 TEST_F(Cli,
-       SpreadParticlesRunsOrSaysWhatItSupports) {  // docs/developer-guide/scaling.md, "One system over several ranks"
+       SpreadParticlesRunsOrSaysWhatItSupports) {  // docs/user-guide/parallel-runs.md, "One system over several ranks"
   write("good.toml", good_scene);
   const Outcome ok = granmc("run good.toml --spread particles --out s.h5 --summary s.json");
   EXPECT_EQ(ok.status, 0) << ok.stderr_text;

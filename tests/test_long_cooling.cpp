@@ -1,7 +1,7 @@
 // A cooling run in which T falls by more than 40 decades still gives the right a2: the stored
-// velocities are rescaled and the centre-of-mass velocity removed as the gas cools (DESIGN.md,
-// "Numerics that must not break"), so the scaled state late in the run is the same homogeneous cooling
-// state as early in the run.
+// velocities are rescaled and the centre-of-mass velocity removed as the gas cools (docs/methods/physics.md,
+// "Scaled velocities: cooling over any number of decades"), so the scaled state late in the run is the same homogeneous
+// cooling state as early in the run.
 #include <cmath>
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-// Hard cases of the time-stepped scheme stay numerically stable (issue: mixtures, item 7): mass ratios
+// Hard cases of the time-stepped scheme stay numerically stable: mass ratios
 // 1e-3 and 1e3, alpha = 0, packing fraction 0.5. Each runs to the end with finite results, total momentum
 // conserved to rounding, and majorants that stay bounded.
 #include <algorithm>

@@ -1,5 +1,6 @@
 // Output: the run report's replica statistics against hand-computed values, the HDF5 file read back with
-// the HDF5 C API, the temporary-file-and-rename rule, and the JSON summary contract (SCENES.md "Summary").
+// the HDF5 C API, the temporary-file-and-rename rule, and the JSON summary contract (docs/formats/scenes.md, "What a
+// run writes").
 #include <hdf5.h>
 #include <unistd.h>
 

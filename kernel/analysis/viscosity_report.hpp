@@ -30,7 +30,8 @@ struct ViscosityReport {
   double reduced_shear_rate_min = 0.0;  // a* range over the window (replica means)
   double reduced_shear_rate_max = 0.0;
   MeanCI eta_scene_units;          // eta = eta* n T / nu at the final mixture temperature (replica mean):
-  MeanCI eta_kinetic_scene_units;  // -P_xy / a in scene units, long-time value (SCENES.md "eta")
+  MeanCI eta_kinetic_scene_units;  // -P_xy / a in scene units, long-time value (the summary's "eta",
+                                   // docs/formats/output-format.md)
   MeanCI drift;                    // eta* over the second half of the window minus over the first half
   bool steady = false;             // |drift| within its confidence half-width: the Navier-Stokes plateau
 };

@@ -1,6 +1,6 @@
 #pragma once
 // Scene: what to simulate, as a plain, validated, immutable value. io/scene_file.cpp builds it from a
-// TOML file (the contract of SCENES.md, documented in docs/formats/scenes.md) and is the only place that checks
+// TOML file (the scene contract, docs/formats/scenes.md) and is the only place that checks
 // it; everything downstream may assume the invariants stated beside each member.
 #include <array>
 #include <cstdint>

@@ -4,9 +4,9 @@
 //
 // The velocity layout is hidden behind this interface (physics never indexes the raw buffer), because it
 // is a measured choice: a random candidate pair among 10^7 particles touches 6 cache lines with one array
-// per component but 2 with one packed 32-byte record per particle (x, y, z, aux), and ran 1.6x faster
-// in a plain loop, 2.1-2.3x with prefetch (perf/bench_layout.cpp keeps the measurement;
-// docs/developer-guide/performance.md the figures). The fourth slot `aux`
+// per component but 2 with one packed 32-byte record per particle (x, y, z, aux), and the packed records
+// win (perf/bench_layout.cpp is the measurement; docs/developer-guide/performance.md, "Velocity layout", its
+// figures on the project machine). The fourth slot `aux`
 // is reserved for the lazy-update time t_j of the event scheme (001 sec. 4), so that scheme also stays
 // within 32 bytes per particle; the time-stepped scheme leaves it unused.
 //
@@ -233,8 +233,8 @@ class BasicSpeciesStore {
     }
   }
 
-  /// Bytes of particle state per particle (the budget of DESIGN.md: at most 32), and the spins' record for rough
-  /// particles (`spins`), which they pay on top.
+  /// Bytes of particle state per particle (at most 32, so that a random pair touches two cache lines), and the spins'
+  /// record for rough particles (`spins`), which they pay on top.
   static constexpr std::size_t bytes_per_particle(bool spins = false) noexcept {
     return sizeof(Record) + (spins ? sizeof(SpinRecord) : 0);
   }

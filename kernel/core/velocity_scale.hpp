@@ -2,7 +2,8 @@
 // Stored velocities are dimensionless: V = u c, with u a velocity scale kept near the thermal speed.
 // A cooling run rescales c and u together whenever the stored energy drifts, so the stored values stay
 // of order one however many decades T falls; u is carried as log u, so T = exp(2 log u) theta never
-// has to be formed when it would underflow (DESIGN.md "Numerics that must not break").
+// has to be formed when it would underflow (docs/methods/physics.md, "Scaled velocities: cooling over any
+// number of decades").
 #include <cmath>
 
 namespace granmc {

@@ -1,7 +1,7 @@
 #pragma once
 // What every free-flight effect sees, and what an effect is (the concept FreeFlightEffect below). An effect is
-// an evaluator struct (DESIGN.md, conventions 1 and 3), an aggregate of its parameters that the run plan
-// (setup/run_plan.cpp) fills from the scene:
+// an evaluator struct (docs/developer-guide/architecture.md, "Adding things"), an aggregate of its parameters that the
+// run plan (setup/run_plan.cpp) fills from the scene:
 //
 //   struct MyEffect {
 //     static constexpr StepPhase phase = StepPhase::...;   // when in the step it acts

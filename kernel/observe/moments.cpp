@@ -8,8 +8,9 @@ namespace granmc {
 template <class Real>
 SpeciesMoments species_moments(const BasicSpeciesStore<Real>& store, const Vec3& centre, std::size_t first,
                                std::size_t last) noexcept {
-  // SimdDouble::size particles at a time, one per lane (a scalar CompensatedSum per moment ran at 6 ns per
-  // particle, a third of a cooling-state run with 40 samples: docs/developer-guide/performance.md).
+  // SimdDouble::size particles at a time, one per lane: a scalar CompensatedSum per moment made the
+  // observation a large part of a cooling-state run (docs/notebook/2026-12-06-performance-history.md, "The observations
+  // lane by lane").
   LaneCompensatedSum s2, s4, s6, px, py, pz;
   const SimdDouble cx(centre.x), cy(centre.y), cz(centre.z);
   for_each_velocity_lanes(

@@ -265,9 +265,9 @@ class BasicEventScheme {
 
   /// The records of the pair of slot k of a prepared batch, into the cache before they are needed. Each
   /// draw prefetches the pair batch_size draws ahead of it (slot k of the other batch), so the misses are
-  /// spread evenly. Issued for a whole batch of 16 at once, the 32 prefetches outnumbered the core's
-  /// outstanding misses and the last ones waited a memory latency (perf at 10^7: a third of the loop's
-  /// samples on them); spread out, 10^7 particles ran 1.2x faster. 32 draws ahead was 4 % faster than 16.
+  /// spread evenly: issued for a whole batch of 16 at once, the 32 prefetches outnumber the core's
+  /// outstanding misses and the last ones wait a memory latency (docs/developer-guide/performance.md,
+  /// "Event scheme").
   void prefetch_pair(const DrawBatch& batch, std::size_t k) const noexcept {
     const Store& store = state_.species[0];
     store.prefetch(batch.i[k]);
