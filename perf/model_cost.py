@@ -9,7 +9,7 @@ with beta = 0; disks run twice as long, so that every scene has about the same n
 pair below runs its two scenes alternately, so that they share the state of the (shared, noisy) machine. The
 figure is the summary's wall_seconds per collision (set-up included); the script prints every run's
 collisions per second and, per pair, the ratio of the median costs per collision and the range of the
-run-by-run ratios. Results: docs/developer-guide/performance.md, "What each model costs".
+run-by-run ratios. Results: docs/developer-guide/performance.md, "Rough particles against smooth ones".
 """
 import os
 import statistics

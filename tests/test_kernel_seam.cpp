@@ -1,4 +1,4 @@
-// The seam a new collision kernel goes through (docs/developer-guide/architecture.md, "Adding a kernel"): a kernel is
+// The seam a new collision kernel goes through (docs/developer-guide/architecture.md, "Adding things"): a kernel is
 // one struct with the time-stepped and the event face of collide/collision_kernel.hpp. This test writes Maxwell's law
 // again as a new kernel would be written, outside the library, and runs it through the one time stepper and the event
 // scheme: both give the bits of the library's MaxwellPseudomolecules. A kernel that misses a member of either face
