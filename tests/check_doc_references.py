@@ -11,7 +11,10 @@ examples are broken on purpose) and reports
   (`io/hdf5_output` for io/hdf5_output.cpp and .hpp); paths with a placeholder (<k>, {species}, *, $) are
   skipped;
 - a section named after a page, `docs/PAGE.md, "Section"`, that is not the start of, or contained in, a
-  heading, a bold paragraph lead (**Section** ...) or the first words of a paragraph of that page.
+  heading, a bold paragraph lead (**Section** ...) or the first words of a paragraph of that page;
+- history where current facts belong: a date (other than in the name of a notebook page) or an issue number
+  anywhere, and in a Markdown page also a commit hash or a work session outside its code blocks. Dated,
+  append-only history belongs in docs/notebook/.
 A comment that wraps a reference over two lines is read as one line. Exit status 1 if anything is reported.
 """
 import argparse
@@ -27,6 +30,11 @@ SECTION = re.compile(r"(docs/[A-Za-z0-9_./-]+\.md),?\s+\"([^\"]+)\"")
 SUFFIXES = (".md", ".cpp", ".hpp", ".py", ".toml", ".txt", ".sh", ".cmake", "Makefile")
 PLACEHOLDER = set("<>{}*$")
 EXAMPLES = {"tests/check_doc_references.py", "tests/test_doc_references.py"}  # hold broken references on purpose
+DATE = re.compile(r"(?<!notebook/)\b20\d\d-[01]\d-[0-3]\d\b")
+ISSUE = re.compile(r"\b[Ii]ssues? #?\d+")
+COMMIT = re.compile(r"\b(?=[0-9a-f]*[a-f])(?=[0-9a-f]*\d)[0-9a-f]{7,40}\b")
+SESSION = re.compile(r"(?<!::)\b[Ss]essions?\b(?! *[(&:])")  # not the C++ class mpi::Session
+FENCE = re.compile(r"^```.*?^```", re.M | re.S)
 WRAP = re.compile(r"\s*\n\s*(?://+|#+|\*(?!\*))?\s*")  # a line break and the next line's comment marker
 
 
@@ -79,6 +87,11 @@ def broken_references(root, files):
                     pages[page] = anchors(f.read())
             if not any(a.startswith(section) or section in a for a in pages[page]):
                 broken.append((name, "no such section", f'{page}, "{section}"'))
+        history = [DATE, ISSUE] + ([COMMIT, SESSION] if name.endswith(".md") else [])
+        prose = FENCE.sub("", text) if name.endswith(".md") else text
+        for pattern in history:
+            for m in pattern.finditer(prose):
+                broken.append((name, "history in a reference page", m.group(0)))
     return broken
 
 

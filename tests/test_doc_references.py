@@ -1,6 +1,7 @@
 """The repository's references to its files and to sections of its pages all resolve
 (tests/check_doc_references.py), and the checker reports what it should, shown on a small tree of its own: a
-missing file, a missing section, a section reference wrapped over two comment lines. Run by ctest
+missing file, a missing section, a section reference wrapped over two comment lines, and history (a date, a
+commit, an issue number, a work session) in a reference page but not in the notebook or a code block. Run by ctest
 (test_doc_references)."""
 import os
 import subprocess
@@ -57,6 +58,19 @@ class CheckDocReferences(unittest.TestCase):
         status, out = check({"docs/page.md": PAGE, "kernel/b.cpp": '// as docs/page.md,\n// "Numerics" says\n'})
         self.assertEqual(status, 1)
         self.assertIn('kernel/b.cpp: no such section: docs/page.md, "Numerics"', out)
+
+    def test_history_in_a_reference_page_is_reported(self):
+        for text, found in [("Rerun on 2026-12-02.\n", "2026-12-02"), ("Since commit a884ac3 it draws.\n", "a884ac3"),
+                            ("As issue 28 asks.\n", "issue 28"), ("Measured in session 12.\n", "session")]:
+            status, out = check({"docs/page.md": PAGE + text})
+            self.assertEqual(status, 1, text)
+            self.assertIn(f"docs/page.md: history in a reference page: {found}", out)
+
+    def test_dates_of_notebook_pages_and_data_in_code_blocks_pass(self):
+        status, out = check({"docs/notebook/2026-01-01-x.md": "", "docs/page.md": PAGE +
+                             "See docs/notebook/2026-01-01-x.md.\n\n```json\n{\"build\": \"0.1.0+0123456789ab\"}\n```\n"
+                             "The class `mpi::Session` and 10^7 particles (10000000).\n"})
+        self.assertEqual(status, 0, out)
 
     def test_the_notebook_is_not_checked(self):
         status, out = check({"docs/page.md": PAGE, "docs/notebook/2026-01-01-x.md": "kernel/gone.hpp\n"})
