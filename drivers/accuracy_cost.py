@@ -21,7 +21,7 @@ a time:
     initial slope of ln T, exactly -zeta_M (the Maxwellian's cooling rate), against particles n and dt.
 Each knob's order is the least-squares slope of log error against log knob, with a CI from resampling
 every point within its own CI (1000 draws, lambda_p = 3.2). Writes OUT/table.md, OUT/figure.png, and
-OUT/study.json; runs are cached per scene text (drivers/figure.py's run_point).
+OUT/study.json; runs are cached per scene text (granmc.scenes.run_point).
 """
 import argparse
 import copy

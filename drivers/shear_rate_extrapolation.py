@@ -24,7 +24,7 @@ import numpy as np
 
 from granmc import LAMBDA_P, open_results, theory_of_text
 from granmc.plotting import pyplot, save
-from zero_shear import fit_intercept, window_mean_shear_rate
+from granmc.zero_shear import fit_intercept, window_mean_shear_rate
 
 
 def points_of(sweep_dir):

@@ -22,7 +22,7 @@ def driver(name, *args, cwd):
 @pytest.mark.parametrize("path", DRIVERS, ids=os.path.basename)
 def test_every_driver_starts(path, tmp_path):
     """--help after every import: argparse's usage (status 0), a script's docstring for wrong arguments (1 or 2),
-    or nothing from a module of functions (zero_shear.py); never a traceback."""
+    or nothing from a module of functions; never a traceback."""
     run = driver(os.path.basename(path), "--help", cwd=tmp_path)
     assert run.returncode in (0, 1, 2), run.stderr
     assert "Traceback" not in run.stderr, run.stderr

@@ -2,7 +2,7 @@
 
 Uniform shear flow is non-Newtonian: eta*(a*) = eta*_NS + c a*^2 + O(a*^4) (the stress is odd in a, so eta is
 even). A run's reduced shear rate a* is its mean over the viscosity window; the fit is weighted least squares
-of eta against a*^2 over the rates, and the intercept is the Navier-Stokes value. Used by drivers/figure.py
+of eta against a*^2 over the rates, and the intercept is the Navier-Stokes value. Used by granmc.figures
 (`[figure.zero_shear]`) and drivers/shear_rate_extrapolation.py.
 """
 import numpy as np
