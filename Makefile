@@ -40,11 +40,11 @@ hcs-disks-alpha08: build
 	$(PYTHON) drivers/plot_cooling.py results/hcs_disks_alpha08.h5 results/hcs_disks_alpha08.png
 	$(PYTHON) drivers/cooling_table.py results/hcs_disks_alpha08.h5
 
-# Rough hard disks under split white noise against the published DSMC/EDMD (docs/methods/validation.md, "Rough particles").
+# Rough hard disks under split white noise against the published DSMC/EDMD (docs/methods/validation/disks-and-rough.md, "Rough particles").
 rough-disks-noise: build
 	$(PYTHON) drivers/rough_split_noise.py --granmc $(GRANMC)
 
-# A rough binary mixture's cooling state against the Maxwellian theory (docs/methods/validation.md, "Rough particles").
+# A rough binary mixture's cooling state against the Maxwellian theory (docs/methods/validation/disks-and-rough.md, "Rough particles").
 rough-mixture: build
 	$(PYTHON) drivers/rough_mixture.py --granmc $(GRANMC)
 

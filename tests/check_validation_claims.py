@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Every agreement claim of docs/methods/validation.md, checked against the table it describes.
+"""Every agreement claim of the validation pages (docs/methods/validation.md and docs/methods/validation/),
+checked against the table it describes.
 
-Usage: /usr/bin/python3 tests/check_validation_claims.py [--doc docs/methods/validation.md]
+Usage: /usr/bin/python3 tests/check_validation_claims.py [--doc PAGE.md ...]
            [--claims tests/validation_claims.toml]
 
 The claims file lists each claim as it is written (its `quote`, found in its `section`) with the table it
@@ -16,6 +17,7 @@ fails when
 `make test` runs it (ctest: check_validation_claims).
 """
 import argparse
+import glob
 import math
 import re
 import sys
@@ -205,10 +207,11 @@ def unchecked_phrases(sections, registered):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--doc", default="docs/methods/validation.md")
+    p.add_argument("--doc", nargs="+", default=["docs/methods/validation.md"] +
+                   sorted(glob.glob("docs/methods/validation/*.md")), help="the pages (default: the validation pages)")
     p.add_argument("--claims", default="tests/validation_claims.toml")
     args = p.parse_args()
-    sections = read_sections(args.doc)
+    sections = [s for doc in args.doc for s in read_sections(doc)]
     with open(args.claims, "rb") as f:
         spec = tomllib.load(f)
     failures, registered = [], {}
@@ -235,7 +238,7 @@ def main():
         return 1
     print(f"check_validation_claims: {len(spec.get('claim', []))} claims hold for their tables, "
           f"{len(spec.get('asserted', []))} are asserted by tests, {len(spec.get('reported', []))} are figures "
-          f"that a target reports; no other claim in {args.doc}")
+          f"that a target reports; no other claim in the {len(args.doc)} pages")
     return 0
 
 

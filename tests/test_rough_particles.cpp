@@ -8,8 +8,8 @@
 //    splitting thermostat, effects/white_noise.hpp): theta = T_rot / T_tr against the DSMC of Megias and Santos,
 //    Front. Phys. 10 (2022) 971671, data files `Steady states/theta_st_DSMC_{alpha}_{beta}.txt` of
 //    github.com/amegiasf/MpembaSplitting, rows epsilon = 0 and 0.5. The splitting of the white
-//    noise from the collisions makes theta move linearly with dt (docs/methods/validation.md, "Rough particles"), so
-//    the comparison is at dt -> 0 by Richardson extrapolation, per replica, from runs at dt and dt / 2.
+//    noise from the collisions makes theta move linearly with dt (docs/methods/validation/disks-and-rough.md, "Rough
+//    particles"), so the comparison is at dt -> 0 by Richardson extrapolation, per replica, from runs at dt and dt / 2.
 #include <cmath>
 #include <cstdio>
 #include <numbers>

@@ -1,6 +1,7 @@
-"""docs/methods/validation.md holds every claim it makes (tests/check_validation_claims.py), and the checker fails where
-it should, shown on a small page of its own: a table that no longer supports its claim, a claim whose text
-changed, an agreement claim nobody registered. Run by ctest (test_validation_claims)."""
+"""The validation pages (docs/methods/validation.md and docs/methods/validation/) hold every claim they make
+(tests/check_validation_claims.py), and the checker fails where it should, shown on a small page of its own: a
+table that no longer supports its claim, a claim whose text changed, an agreement claim nobody registered. Run
+by ctest (test_validation_claims)."""
 import os
 import subprocess
 import sys
@@ -43,7 +44,7 @@ def check(page, claims=CLAIMS):
 
 
 class CheckValidationClaims(unittest.TestCase):
-    def test_docs_validation_md_holds_its_claims(self):
+    def test_the_validation_pages_hold_their_claims(self):
         r = subprocess.run([sys.executable, os.path.join(HERE, "check_validation_claims.py")], capture_output=True,
                            text=True, cwd=ROOT)
         self.assertEqual(r.returncode, 0, r.stdout)
