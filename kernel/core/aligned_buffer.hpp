@@ -2,8 +2,10 @@
 // Fixed-size, cache-line-aligned buffer of trivially copyable values. Large buffers are aligned to
 // 2 MiB and advised for transparent huge pages: random pair access over 10^7 particles is bound by
 // TLB and cache misses (docs/developer-guide/performance.md).
+#include <omp.h>
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
@@ -60,7 +62,9 @@ class AlignedBuffer {
   static constexpr std::size_t huge_page = std::size_t{2} << 20;
 
   AlignedBuffer() = default;
-  explicit AlignedBuffer(std::size_t n) : size_(n) {
+  /// n zeros, written by `threads` threads, each a contiguous part: the first touch of a fresh block makes the
+  /// kernel clear its pages, which then happens on all of them.
+  explicit AlignedBuffer(std::size_t n, int threads = 1) : size_(n) {
     if (n == 0) return;
     const std::size_t bytes = n * sizeof(T);
     const std::size_t align = bytes >= huge_page ? huge_page : cache_line;
@@ -71,7 +75,12 @@ class AlignedBuffer {
       if (data_ == nullptr) throw std::bad_alloc();
       if (align == huge_page) madvise(data_, rounded, MADV_HUGEPAGE);  // advice only; failure is harmless
     }
-    std::memset(static_cast<void*>(data_), 0, rounded);
+    const std::size_t parts = static_cast<std::size_t>(std::max(threads, 1));
+    const std::size_t part = (rounded / align + parts - 1) / parts * align;
+    char* const bytes_at = reinterpret_cast<char*>(data_);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+    for (std::size_t k = 0; k < parts; ++k)
+      if (k * part < rounded) std::memset(bytes_at + k * part, 0, std::min(part, rounded - k * part));
   }
   AlignedBuffer(const AlignedBuffer& o) : AlignedBuffer(o.size_) {
     if (size_ != 0) std::memcpy(static_cast<void*>(data_), o.data_, size_ * sizeof(T));

@@ -50,7 +50,8 @@ class BasicSpeciesStore {
   };
 
   BasicSpeciesStore() = default;
-  explicit BasicSpeciesStore(std::size_t particles) : records_(particles) {}
+  /// `threads`: the threads that write its zeros first (core/aligned_buffer.hpp).
+  explicit BasicSpeciesStore(std::size_t particles, int threads = 1) : records_(particles, threads) {}
 
   [[nodiscard]] std::size_t size() const noexcept { return records_.size(); }
 

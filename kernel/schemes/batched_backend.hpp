@@ -27,10 +27,10 @@ class BatchedBackend {
   /// `threads`: the replica's threads for its collision stage.
   explicit BatchedBackend(const Scene&, int threads = 1) noexcept { rounds_.threads = threads; }
 
-  /// The Maxwellian start (000 eq. 13) with zero momentum per species.
+  /// The Maxwellian start (000 eq. 13) with zero momentum per species, on the replica's threads.
   template <class Real>
   BasicGasState<Real> initial_state(const Scene& scene, const RandomStream& rng) const {
-    return maxwellian_state<Real>(scene, rng);
+    return maxwellian_state<Real>(scene, rng, rounds_.threads);
   }
 
   /// The moments of every species about the origin.

@@ -12,10 +12,11 @@ namespace granmc {
 /// first + k) (core/batch_variates.hpp ParticleNormals, 64 particles at a time in SIMD) times `width`, the
 /// thermal width 1/sqrt(m) in stored units; in d = `dimension` = 2 (disks) the z component is 0. A system
 /// spread over ranks fills its part with first = its first particle, and gets the velocities of the
-/// one-process start.
+/// one-process start. `threads` fill blocks of 64 particles each; every particle's velocity comes from its own
+/// block, so the result is the same for any number.
 template <class Real>
 void maxwellian_velocities(BasicSpeciesStore<Real>& store, const RandomStream& rng, std::uint16_t species,
-                           std::uint64_t first, double width, int dimension) noexcept;
+                           std::uint64_t first, double width, int dimension, int threads = 1) noexcept;
 
 /// The spins of rough particles `first` + k of species i at equipartition, T_rot = T(0), into particle k of
 /// `store` (which it gives spins): s = (sigma / 2) omega with <s_c^2> = T(0) / (kappa m) per rotational degree of
@@ -30,7 +31,9 @@ void maxwellian_spins(BasicSpeciesStore<Real>& store, const RandomStream& rng, s
 /// Maxwellian spins at the same temperature (core/species_store.hpp). The velocity scale is
 /// u = sqrt(T(0)), so stored velocities have m <c^2> / d = 1 on average.
 /// Real is the storage precision (GasState or FloatGasState): the draws are the same, rounded when stored.
+/// `threads`: the replica's threads, which clear the stores' memory and draw the velocities (the same bits for
+/// any number).
 template <class Real = double>
-BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng);
+BasicGasState<Real> maxwellian_state(const Scene& scene, const RandomStream& rng, int threads = 1);
 
 }  // namespace granmc
