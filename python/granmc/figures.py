@@ -48,7 +48,6 @@ plateau test (viscosity.steady).
 import copy
 import json
 import os
-import subprocess
 import tomllib
 
 import numpy as np
@@ -56,7 +55,7 @@ import numpy as np
 from granmc.plotting import pyplot, save
 from granmc.replicas import LAMBDA_P
 from granmc.scenes import run_sweep as granmc_sweep
-from granmc.scenes import toml_text
+from granmc.scenes import theory
 from granmc.zero_shear import fit_intercept, window_mean_shear_rate
 
 
@@ -187,13 +186,6 @@ def run_points(run, here, fig, curves, bases, scenes, out):
         dirs.add(sweep_dir)
         results.update(run_sweep(run, path, group, bases[name], sweep_dir))
     return results
-
-
-def theory_of(granmc, scene, tmp_path):
-    with open(tmp_path, "w") as f:
-        f.write(toml_text(scene))
-    out = subprocess.run([granmc, "theory", tmp_path], check=True, capture_output=True, text=True).stdout
-    return json.loads(out)
 
 
 # ---- quantities -------------------------------------------------------------------------------------------
@@ -333,11 +325,9 @@ def make_figure(figure_path, granmc, out=None, threads=0, mpi=0, only_theory=Fal
                     pt = {"sim": simulated(summary, y), "wall_seconds": summary["wall_seconds"],
                           "hdf5": os.path.relpath(hdf5, out), "builds": [build_of(summary)]}
                 pt.update({"x": x, "seed": next(sc for p_, sc in scenes.items() if p_[:2] == (ci_, x))["run"]["seed"],
-                           "theory": theoretical(theory_of(granmc, point_scene(bases, curve, x_name, x),
-                                                           os.path.join(out, "theory.toml")), y)})
+                           "theory": theoretical(theory(granmc, point_scene(bases, curve, x_name, x)), y)})
                 pts.append(pt)
-        lines = [theoretical(theory_of(granmc, point_scene(bases, curve, x_name, x),
-                                       os.path.join(out, "theory.toml")), y) for x in x_theory]
+        lines = [theoretical(theory(granmc, point_scene(bases, curve, x_name, x)), y) for x in x_theory]
         results.append({"label": curve["label"], "points": pts, "theory_x": list(x_theory), "theory": lines})
 
     if y == "temperature_ratio_relative":
