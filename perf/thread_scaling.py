@@ -10,7 +10,9 @@ The figure is the summary's wall_seconds (granmc's own wall time, set-up include
 runs of a scene alternate, so that they share the state of the (shared, noisy) machine; the script prints
 every run, the speed-up of the medians, the median and range of the pairs' ratios (run k on one thread over run k
 on two, which made back to back share the machine's state of the moment), and for the runs with threads inside the
-replica the rounds' counts. --only REGEX keeps the scenes whose file name matches. It also checks that the two-thread files hold the bits of the one-thread files
+replica the rounds' counts; where a size's one-replica and two-replica scenes both ran, the share of the two
+replicas' speed-up that one replica reaches (the ceiling: docs/developer-guide/scaling.md, "What two cores allow").
+--only REGEX keeps the scenes whose file name matches. It also checks that the two-thread files hold the bits of the one-thread files
 (tests/same_bits.py --files), and exits with status 1 if they do not.
 """
 import os
@@ -37,6 +39,7 @@ def main():
     args = p.parse_args()
     work = work_directory(args, "granmc-threads-")
     same = True
+    speedups = {}  # scene file stem -> (speed-up of the medians, median of the paired ratios)
     print("| scene | 1 thread (s) | 2 threads (s) | speed-up of the medians | paired ratios: median [range] "
           "| rounds, deferred, rerun in order |")
     print("|---|---|---|---|---|---|")
@@ -59,9 +62,16 @@ def main():
         if "collision_rounds" in two[0]:
             s = two[0]
             rounds = f"{s['collision_rounds']}, {s['collision_rounds_deferred']}, {s['collision_rounds_in_order']}"
+        speedups[os.path.splitext(name)[0]] = (statistics.median(w1) / statistics.median(w2), statistics.median(paired))
         print(f"| {what} | {', '.join(f'{w:.2f}' for w in w1)} | {', '.join(f'{w:.2f}' for w in w2)} | "
               f"{statistics.median(w1) / statistics.median(w2):.2f} | "
               f"{statistics.median(paired):.2f} [{paired[0]:.2f}, {paired[-1]:.2f}] | {rounds} |")
+    # Two replicas share nothing but the memory system: their speed-up is the ceiling for one replica's rounds.
+    for size in ("1e7", "1e6"):
+        one, two = speedups.get(f"one_replica_{size}"), speedups.get(f"two_replicas_{size}")
+        if one and two:
+            print(f"one replica of {size} on two threads reaches {one[0] / two[0]:.2f} of the two replicas' speed-up "
+                  f"(medians), {one[1] / two[1]:.2f} (paired ratios)")
     print("two-thread files hold the one-thread bits" if same else "two-thread files DIFFER from the one-thread files")
     return 0 if same else 1
 
