@@ -2,7 +2,6 @@
 // Fixed-size, cache-line-aligned buffer of trivially copyable values. Large buffers are aligned to
 // 2 MiB and advised for transparent huge pages: random pair access over 10^7 particles is bound by
 // TLB and cache misses (docs/developer-guide/performance.md).
-#include <omp.h>
 #include <sys/mman.h>
 
 #include <algorithm>
