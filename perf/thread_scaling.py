@@ -62,10 +62,10 @@ def main():
         if "collision_rounds" in two[0]:
             s = two[0]
             rounds = f"{s['collision_rounds']}, {s['collision_rounds_deferred']}, {s['collision_rounds_in_order']}"
-        speedups[os.path.splitext(name)[0]] = (statistics.median(w1) / statistics.median(w2), statistics.median(paired))
+        of_medians, of_pairs = statistics.median(w1) / statistics.median(w2), statistics.median(paired)
+        speedups[os.path.splitext(name)[0]] = (of_medians, of_pairs)
         print(f"| {what} | {', '.join(f'{w:.2f}' for w in w1)} | {', '.join(f'{w:.2f}' for w in w2)} | "
-              f"{statistics.median(w1) / statistics.median(w2):.2f} | "
-              f"{statistics.median(paired):.2f} [{paired[0]:.2f}, {paired[-1]:.2f}] | {rounds} |")
+              f"{of_medians:.2f} | {of_pairs:.2f} [{paired[0]:.2f}, {paired[-1]:.2f}] | {rounds} |")
     # Two replicas share nothing but the memory system: their speed-up is the ceiling for one replica's rounds.
     for size in ("1e7", "1e6"):
         one, two = speedups.get(f"one_replica_{size}"), speedups.get(f"two_replicas_{size}")
