@@ -32,6 +32,10 @@ class SpinBarrier {
     }
   }
 
+  /// How many threads wait in arrive_and_wait now (a hint: it may be out of date when it returns). A thread that
+  /// calls it between two of its own arrive_and_wait calls counts the others that have reached the next.
+  [[nodiscard]] int waiting() const noexcept { return arrived_.load(std::memory_order_relaxed); }
+
  private:
   static constexpr int spins_before_yield = 4096;
   static void pause() noexcept {

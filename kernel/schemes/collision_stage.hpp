@@ -201,10 +201,13 @@ class BatchedStage {
 
   /// Candidates first .. end - 1 in order, drawn a batch ahead, from the pair choice's present state (deck).
   void run_range(std::uint64_t first, std::uint64_t end) noexcept {
-    run_batches(first, end, [this](std::uint64_t i, std::uint64_t s0, std::uint64_t m) -> const Drawn& {
-      draw(drawn_[i & 1u], s0, m);
-      return drawn_[i & 1u];
-    });
+    run_batches(
+        first, end,
+        [this](std::uint64_t i, std::uint64_t s0, std::uint64_t m) -> const Drawn& {
+          draw(drawn_[i & 1u], s0, m);
+          return drawn_[i & 1u];
+        },
+        [] { return false; });
   }
 
   [[nodiscard]] std::uint64_t total() const noexcept { return total_; }
@@ -245,32 +248,38 @@ class BatchedStage {
     }
   }
 
-  /// The chunk's candidates first .. end - 1 in order, drawn a batch ahead as on one thread, each batch's
+  /// The chunk's candidates from `first` in order, drawn a batch ahead as on one thread, each batch's
   /// candidates deferred as it is drawn when they may meet a particle of the earlier candidates (note_earlier)
   /// or meet one of a deferred candidate before them; the others run, and keep their terms, the velocities they
-  /// overwrote and whether they raised a majorant.
-  void run_chunk(std::uint64_t first, std::uint64_t end) {
+  /// overwrote and whether they raised a majorant. It ends at `end`, or earlier at the end of the first batch
+  /// before which `stop()` holds; returns where it ended. Any prefix of a chunk whole batches long is a chunk.
+  template <class Stop>
+  std::uint64_t run_chunk(std::uint64_t first, std::uint64_t end, Stop&& stop) {
     outcomes_.reset(end - first), undo_.reset(2 * (end - first)), spin_undo_.reset(rough ? 2 * (end - first) : 0);
     deferred_.clear();
-    run_batches(first, end, [&](std::uint64_t i, std::uint64_t s0, std::uint64_t m) -> const Drawn& {
-      Drawn& d = drawn_[i & 1u];
-      draw(d, s0, m);
-      skip_[i & 1u] = 0;
-      for (std::uint64_t b = 0; b < m; ++b) {
-        if (earlier_.may_contain(d.pk[b].address()) || earlier_.may_contain(d.pl[b].address())) {
-          skip_[i & 1u] |= std::uint64_t{1} << b;
-          // A deferred candidate's particles join the filter: a later candidate of the chunk that names one is
-          // deferred too, and replays after it.
-          earlier_.insert(AddressFilter::key(d.pk[b].address()));
-          earlier_.insert(AddressFilter::key(d.pl[b].address()));
-          deferred_.push_back(
-              {s0 + b, d.pk[b], d.pl[b], d.qs[b], d.accept[b], d.dir1[b], d.dir2[b], d.sx[b], d.sy[b], d.sz[b]});
-        }
-      }
-      return d;
-    });
+    const std::uint64_t ended = run_batches(
+        first, end,
+        [&](std::uint64_t i, std::uint64_t s0, std::uint64_t m) -> const Drawn& {
+          Drawn& d = drawn_[i & 1u];
+          draw(d, s0, m);
+          skip_[i & 1u] = 0;
+          for (std::uint64_t b = 0; b < m; ++b) {
+            if (earlier_.may_contain(d.pk[b].address()) || earlier_.may_contain(d.pl[b].address())) {
+              skip_[i & 1u] |= std::uint64_t{1} << b;
+              // A deferred candidate's particles join the filter: a later candidate of the chunk that names one is
+              // deferred too, and replays after it.
+              earlier_.insert(AddressFilter::key(d.pk[b].address()));
+              earlier_.insert(AddressFilter::key(d.pl[b].address()));
+              deferred_.push_back(
+                  {s0 + b, d.pk[b], d.pl[b], d.qs[b], d.accept[b], d.dir1[b], d.dir2[b], d.sx[b], d.sy[b], d.sz[b]});
+            }
+          }
+          return d;
+        },
+        stop);
     replayed_from_ = outcomes_.size();
     undo_replayed_from_ = undo_.size();
+    return ended;
   }
 
   /// The deferred candidates, in order, each in full (after every earlier chunk of the round has run).
@@ -320,10 +329,11 @@ class BatchedStage {
   /// one collides; candidate b of the current batch prefetches the records of candidate b of the next, a batch
   /// ahead of their use. The prefetches are spread over the batch: issued a batch's 128 at once, more than the
   /// core's outstanding misses, the last ones waited a memory latency (as in the event scheme,
-  /// docs/developer-guide/performance.md). In a round the deferred candidates of a batch are skipped.
-  template <class BatchAt>
-  void run_batches(std::uint64_t first, std::uint64_t end, BatchAt&& batch_at) noexcept {
-    if (first >= end) return;
+  /// docs/developer-guide/performance.md). In a round the deferred candidates of a batch are skipped. When `stop()`
+  /// holds before a batch is drawn, the range ends with the batch before it. Returns where the range ended.
+  template <class BatchAt, class Stop>
+  std::uint64_t run_batches(std::uint64_t first, std::uint64_t end, BatchAt&& batch_at, Stop&& stop) noexcept {
+    if (first >= end) return first;
     const Drawn* current = &batch_at(0, first, std::min(batch, end - first));
     for (std::uint64_t b = 0; b < std::min(batch, end - first); ++b) {
       current->pk[b].prefetch();
@@ -331,7 +341,7 @@ class BatchedStage {
     }
     for (std::uint64_t i = 0, s0 = first; s0 < end; ++i, s0 += batch) {
       const std::uint64_t m = std::min(batch, end - s0);
-      const std::uint64_t m_next = s0 + m < end ? std::min(batch, end - s0 - m) : 0;
+      const std::uint64_t m_next = s0 + m < end && !stop() ? std::min(batch, end - s0 - m) : 0;
       const Drawn& d = *current;
       const Drawn& next = m_next > 0 ? batch_at(i + 1, s0 + m, m_next) : d;
       const std::uint64_t skip = in_round ? skip_[i & 1u] : 0;
@@ -352,8 +362,10 @@ class BatchedStage {
           if (((skip >> b) & 1u) == 0) test_and_apply(d, b, d.sx, d.sy, d.sz, b);
         }
       }
+      if (m_next == 0) return s0 + m;
       current = &next;
     }
+    return end;
   }
 
   /// The pair of candidate s, given its uniform word, without replacement: a uniformly random interleaving of

@@ -11,8 +11,9 @@
 //     their particles in a filter of its own, then runs its chunk: it defers each candidate that may name a
 //     particle of the filter, or names one of a deferred candidate before it, and runs the others in order,
 //     records prefetched a batch ahead as on one thread, keeping their terms and the velocities they overwrote;
-//  3. the leader replays the followers' deferred candidates in candidate order, then adds the followers'
-//     collisions' terms to the tallies in candidate order.
+//  3. the last follower, whose chunk ends when the others are done (below), replays the followers' deferred
+//     candidates in candidate order, then adds the followers' collisions' terms to the tallies in candidate
+//     order (the terms it adds are mostly its own, still in its cache).
 // A candidate that runs in step 2 names no particle that an earlier candidate of the round, in another
 // chunk, names: every particle sees the updates of the serial order, in that order. The filter may answer
 // "maybe" for a particle no earlier chunk names; that defers a candidate needlessly and changes nothing else.
@@ -20,10 +21,12 @@
 // followers test against its value at the round's start, which is the serial value unless a candidate before
 // theirs raises it. If the leader or a follower raises it, the followers' velocities (and the spins of rough
 // particles, beside the records under the same index) are restored from the overwritten values kept in steps
-// 2 and 3, and their chunks run again in order after the leader's. Raises are rare (a few per run). The
-// leader's chunk grows or shrinks a batch per round so that it takes as long as the slowest follower's (whose
-// note of the earlier candidates it does not pay); the split changes which candidates are deferred, never a
-// result.
+// 2 and 3, and their chunks run again in order after the leader's. Raises are rare (a few per run).
+// The last follower's chunk ends with the batch it is running when every other thread has finished its chunk:
+// the candidates of a chunk up to a batch's end are a chunk, and the next round starts after them. So no thread
+// waits for it, whatever the machine's load. With more than two threads the leader's chunk grows or shrinks a
+// batch per round so that it takes as long as the slowest of the other followers' (whose note of the earlier
+// candidates it does not pay). Where a chunk ends changes which candidates are deferred, never a result.
 #include <omp.h>
 
 #include <algorithm>
@@ -77,8 +80,12 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
     serial.finish(omega_max, tallies);
     return;
   }
-  if (rounds.leader_chunk == 0) rounds.leader_chunk = chunk;
+  // The leader's chunk: four followers' chunks to start with; longer rounds pay the round's fixed costs (two
+  // barriers, the pipelines' restarts) less often and defer more (docs/developer-guide/scaling.md).
+  if (rounds.leader_chunk == 0) rounds.leader_chunk = 4 * chunk;
   const std::uint64_t least_lead = chunk / 4, most_lead = 8 * chunk;
+  const std::uint64_t longest_last = 8 * chunk;  // the last follower's chunk, which ends when the others are done
+  std::uint64_t round_end = 0;                   // where the last follower's chunk ended
   // The next round's start, shared: its first candidate, and the pair choice and majorants there.
   std::uint64_t round_first = 0;
   typename Serial::PairDeck round_deck{};
@@ -121,12 +128,16 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
         const std::uint64_t own = lead_end + (t - 1) * chunk;
         stage->begin_round(round_deck, round_majorants);
         stage->note_earlier(first, own);
-        stage->run_chunk(own, own + chunk);
+        if (t + 1 < team) {
+          stage->run_chunk(own, own + chunk, [] { return false; });
+        } else {
+          round_end = stage->run_chunk(own, std::min(total, own + longest_last),
+                                       [&] { return barrier->waiting() + 1 == static_cast<int>(team); });
+        }
       }
       seconds[t] = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
       barrier->arrive_and_wait();
-      if (t == 0) {
-        const std::uint64_t round_end = lead_end + (team - 1) * chunk;
+      if (t + 1 == team) {  // the last follower, whose collisions' terms are in its own cache
         bool raised = !std::ranges::equal(serial.majorants(), round_majorants);
         for (std::uint64_t u = 1; u < team; ++u) {
           raised = raised || followers[u]->raised();
@@ -155,11 +166,13 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
           serial.set_deck(followers[team - 1]->deck());
         }
         ++rounds.counts.rounds;
-        double slowest = 0.0;
-        for (std::uint64_t u = 1; u < team; ++u) slowest = std::max(slowest, seconds[u]);
-        const std::uint64_t lead = rounds.leader_chunk;
-        rounds.leader_chunk = slowest > seconds[0] ? std::min(most_lead, lead + batch)
-                                                   : std::max(least_lead, lead - std::min(lead, batch));
+        if (team > 2) {
+          double slowest = 0.0;
+          for (std::uint64_t u = 1; u + 1 < team; ++u) slowest = std::max(slowest, seconds[u]);
+          const std::uint64_t lead = rounds.leader_chunk;
+          rounds.leader_chunk = slowest > seconds[0] ? std::min(most_lead, lead + batch)
+                                                     : std::max(least_lead, lead - std::min(lead, batch));
+        }
         start_round(round_end);
       }
       barrier->arrive_and_wait();
