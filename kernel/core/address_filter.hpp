@@ -7,8 +7,8 @@
 // 4 x 2048 candidates about 1 query in 550 for an address not inserted answers "maybe", as for random bits
 // (each word holds the bits of one address on average). The word and the two bits come from the top 26 bits
 // of a multiplicative hash, its best mixed; bits 32-45 made "maybe" 1.5 times as frequent. Half the words, with
-// those bits, deferred 2.4 times as many candidates in one replica of 10^7 particles on two threads, and its
-// rounds took about 3 % longer (docs/developer-guide/scaling.md).
+// those bits, deferred 2.4 times as many candidates in one replica of 10^7 particles on two threads, and the
+// run took about 3 % longer (docs/developer-guide/scaling.md).
 #include <cstdint>
 #include <vector>
 
