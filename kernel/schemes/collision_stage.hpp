@@ -712,7 +712,7 @@ class BatchedStage {
     double accept, dir1, dir2, sx, sy, sz;
   };
   std::vector<DeferredCandidate> deferred_;
-  // The round's filter, absent from a stage outside a round (it is 64 KB, and a stage is made per step).
+  // The round's filter, absent from a stage outside a round (it is 128 KB, and a stage is made per step).
   struct NotInRound {};
   template <class T>
   using RoundOnly = std::conditional_t<in_round, T, NotInRound>;

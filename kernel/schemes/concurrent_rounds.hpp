@@ -51,7 +51,7 @@ namespace granmc {
 struct ConcurrentRounds {
   int threads = 1;
   CollisionRoundCounts counts;
-  std::uint64_t leader_chunk = 0;  // candidates of the leader's chunk, balanced over the rounds (0: not yet set)
+  std::uint64_t leader_chunk = 0;  // candidates of the leader's chunk, kept from step to step (0: not yet set)
 };
 
 /// Candidates of a follower's chunk for N particles: about N / 4096 (a multiple of the batch), at least 512 and
