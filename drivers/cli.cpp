@@ -118,7 +118,7 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
               static_cast<double>(what.particle_bytes) / 1e6, what.replicas_in_flight, what.bytes_per_particle);
   if (what.threads_per_replica > 1)
     std::printf(
-        "threads      %d replica(s) at a time, each on %d threads: the collision stage in concurrent rounds, the "
+        "threads      %d replica(s) at a time, each on %d threads: the candidates in concurrent rounds, the "
         "same bits as on one; faster for replicas of millions of particles, slower for small ones "
         "(docs/user-guide/parallel-runs.md)\n",
         what.replicas_in_flight, what.threads_per_replica);
@@ -332,7 +332,7 @@ int cli_main(int argc, char** argv) {
   run_cmd
       ->add_option("--threads-per-replica", run.threads_per_replica,
                    "At most this many threads inside one replica, for threads the replicas leave over (time-stepped "
-                   "scheme: the collision stage in concurrent rounds, the same bits; default 1: "
+                   "and event schemes: the candidates in concurrent rounds, the same bits; default 1: "
                    "docs/user-guide/parallel-runs.md)")
       ->check(CLI::Range(1, 4096));
   run_cmd->add_option("--seed", run.seed, "Override the scene's run.seed");

@@ -109,8 +109,8 @@ std::vector<OutputRecord> declare() {
   add("threads", K::count, S, "", "OpenMP threads (of rank 0 over MPI)",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.threads); });
   add("threads_per_replica", K::count, S, "",
-      "of the threads, each replica's own: the time-stepped scheme's concurrent collision rounds "
-      "(docs/user-guide/parallel-runs.md)",
+      "of the threads, each replica's own: the concurrent rounds of the time-stepped scheme's collision stage or "
+      "the event scheme's candidates (docs/user-guide/parallel-runs.md)",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.threads_per_replica); });
   // The concurrent rounds' counts (observe/gas_series.hpp), present when the replicas had threads inside them.
   const auto round_count = [](std::uint64_t CollisionRoundCounts::*count) {
@@ -120,15 +120,15 @@ std::vector<OutputRecord> declare() {
     };
   };
   add("collision_rounds", K::count, S, "",
-      "time-stepped scheme with threads inside a replica: collision rounds run on several threads, all replicas (of "
-      "rank 0 over MPI)",
+      "time-stepped or event scheme with threads inside a replica: rounds of candidates run on several threads, all "
+      "replicas (of rank 0 over MPI)",
       round_count(&CollisionRoundCounts::rounds));
   add("collision_rounds_deferred", K::count, S, "",
       "candidates those rounds deferred to the round's end (a particle that an earlier thread's chunk names) and "
       "replayed in order",
       round_count(&CollisionRoundCounts::deferred));
   add("collision_rounds_in_order", K::count, S, "",
-      "rounds run again in order on one thread because a collision raised the majorant",
+      "rounds run again in order on one thread because a candidate raised the majorant",
       round_count(&CollisionRoundCounts::in_order));
   add("ranks", K::count, S, "", "MPI ranks (1 without MPI)",
       [](const RunOutput& o, std::size_t) { return static_cast<std::uint64_t>(o.result.ranks); });

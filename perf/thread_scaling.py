@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Wall time of `granmc run` on one thread and on two, for the tables of docs/developer-guide/scaling.md
-("Concurrent collision rounds"): one replica of 10^7, 10^6 and 10^5 particles with its two threads inside it
-(--threads-per-replica 2), and two replicas of 10^7 and of 10^6 with one thread each.
+("Concurrent collision rounds", "The event scheme's rounds"): one replica of 10^7, 10^6 and 10^5 particles with
+its two threads inside it (--threads-per-replica 2), and two replicas of 10^7 and of 10^6 with one thread each;
+the event scheme's one replica of 10^7 with two threads inside it and two replicas of 10^7.
 
 Usage: /usr/bin/python3 perf/thread_scaling.py [--granmc build/bin/granmc] [--runs 3] [--work DIR]
-       (`make bench-threads`; about 2 minutes per run on this 2-core host)
+       (`make bench-threads`; about 3 minutes per run on this 2-core host)
 
 The figure is the summary's wall_seconds (granmc's own wall time, set-up included). The one- and two-thread
 runs of a scene alternate, so that they share the state of the (shared, noisy) machine; the script prints
@@ -30,6 +31,8 @@ CASES = [  # scene, the two-thread run's extra arguments, what it measures
     ("one_replica_1e5.toml", ["--threads-per-replica", "2"], "one replica of 10^5, 2 threads inside it"),
     ("two_replicas_1e7.toml", [], "two replicas of 10^7, one thread each"),
     ("two_replicas_1e6.toml", [], "two replicas of 10^6, one thread each"),
+    ("event_one_replica_1e7.toml", ["--threads-per-replica", "2"], "event scheme, one replica of 10^7, 2 threads inside it"),
+    ("event_two_replicas_1e7.toml", [], "event scheme, two replicas of 10^7, one thread each"),
 ]
 
 
@@ -67,11 +70,11 @@ def main():
         print(f"| {what} | {', '.join(f'{w:.2f}' for w in w1)} | {', '.join(f'{w:.2f}' for w in w2)} | "
               f"{of_medians:.2f} | {of_pairs:.2f} [{paired[0]:.2f}, {paired[-1]:.2f}] | {rounds} |")
     # Two replicas share nothing but the memory system: their speed-up is the ceiling for one replica's rounds.
-    for size in ("1e7", "1e6"):
-        one, two = speedups.get(f"one_replica_{size}"), speedups.get(f"two_replicas_{size}")
+    for scheme, size in (("", "1e7"), ("", "1e6"), ("event_", "1e7")):
+        one, two = speedups.get(f"{scheme}one_replica_{size}"), speedups.get(f"{scheme}two_replicas_{size}")
         if one and two:
-            print(f"one replica of {size} on two threads reaches {one[0] / two[0]:.2f} of the two replicas' speed-up "
-                  f"(medians), {one[1] / two[1]:.2f} (paired ratios)")
+            print(f"{scheme.replace('_', ' scheme, ')}one replica of {size} on two threads reaches {one[0] / two[0]:.2f} "
+                  f"of the two replicas' speed-up (medians), {one[1] / two[1]:.2f} (paired ratios)")
     print("two-thread files hold the one-thread bits" if same else "two-thread files DIFFER from the one-thread files")
     return 0 if same else 1
 

@@ -26,6 +26,7 @@
 #include "kernel/collide/maxwell_pseudomolecules.hpp"
 #include "kernel/collide/variable_hard_spheres.hpp"
 #include "kernel/observe/moments.hpp"
+#include "kernel/schemes/event_rounds.hpp"
 #include "kernel/schemes/event_scheme.hpp"
 #include "kernel/schemes/initial_state.hpp"
 #include "kernel/setup/run_scene.hpp"
@@ -583,3 +584,73 @@ void expect_snapshots_go_on_alike() {
 TEST(EventScheme, SnapshotAtASampleTimeGoesOnToTheSameBits) { expect_snapshots_go_on_alike<double>(); }
 
 TEST(EventScheme, SnapshotAtASampleTimeGoesOnToTheSameBitsWithFloatStorage) { expect_snapshots_go_on_alike<float>(); }
+
+namespace {
+
+/// The scheme in concurrent rounds (schemes/event_rounds.hpp) on `threads` threads and on one, from the same
+/// start to the same sample times: every particle, last-update time and count the same bits, with rounds run,
+/// candidates deferred, and, where U_max was raised, rounds run again in order.
+template <class Real, class Kernel>
+void expect_rounds_match_one_thread(const Scene& s, Kernel kernel, int threads) {
+  using Scheme = BasicEventScheme<Real, Kernel>;
+  Scheme one(s, 0, kernel), many(s, 0, kernel);
+  EventRounds<Scheme> rounds(threads);
+  for (int k = 1; k <= s.run.samples; ++k) {
+    const double t = s.run.t_end * k / s.run.samples;
+    one.advance_to(t);
+    rounds.advance_to(many, t);
+    expect_same_store(one.state().species[0], many.state().species[0], t);
+  }
+  expect_same_tally(one.tally(), many.tally());
+  EXPECT_GT(one.tally().collisions, 10000u);
+  EXPECT_GT(rounds.counts().rounds, 10u);
+  EXPECT_GT(rounds.counts().deferred, 0u);
+  EXPECT_EQ(rounds.counts().in_order > 0, one.tally().majorant_updates > 0);
+}
+
+template <class Real>
+void expect_rounds_match_one_thread_for_each_kernel() {
+  for (const bool noise : {true, false}) {
+    constexpr std::string_view text = R"(
+      [run]
+      method = "event"
+      seed = 13
+      t_end = ${t_end}
+      samples = 3
+      dimension = ${dimension}
+
+      [[species]]
+      particles = 20000
+
+      [collision]
+      kernel = "hard-sphere"
+      rate = 1.2732395447351628
+      restitution = 0.1
+
+      ${thermostat}
+    )";
+    auto scene = [&](int dimension) {
+      return scene_from_toml(text, {{"t_end", noise ? 0.5 : 2.0},
+                                    {"dimension", dimension},
+                                    {"thermostat", noise ? "[thermostat]\nkind = \"white-noise\"\nbeta = 30.0" : ""}});
+    };
+    const Scene spheres = scene(3), disks = scene(2);
+    for (const int threads : {2, 4}) {
+      SCOPED_TRACE(std::string(noise ? "white noise" : "no noise") + ", " + std::to_string(threads) + " threads");
+      expect_rounds_match_one_thread<Real>(spheres, HardSphere{}, threads);
+      expect_rounds_match_one_thread<Real>(spheres, VariableHardSpheres{0.5}, threads);
+      expect_rounds_match_one_thread<Real>(spheres, MaxwellPseudomolecules{}, threads);
+      expect_rounds_match_one_thread<Real>(disks, HardDisk{}, threads);
+    }
+  }
+}
+
+}  // namespace
+
+TEST(EventScheme, RoundsOnSeveralThreadsAreTheSameBitsAsOne) {
+  expect_rounds_match_one_thread_for_each_kernel<double>();
+}
+
+TEST(EventScheme, RoundsOnSeveralThreadsAreTheSameBitsAsOneWithFloatStorage) {
+  expect_rounds_match_one_thread_for_each_kernel<float>();
+}

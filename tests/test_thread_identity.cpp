@@ -228,11 +228,12 @@ TEST(SeedIdentity, SeedChangesTheRealisation) {
   EXPECT_NE(a.replicas[0].temperature.back(), b.replicas[0].temperature.back());
 }
 
-// One replica, so the threads go inside it: the time-stepped scheme's concurrent collision rounds
-// (schemes/concurrent_rounds.hpp) on enough particles that the rounds run rather than fall back to one thread.
+// One replica, so the threads go inside it: the concurrent rounds of the time-stepped scheme's collision stage
+// (schemes/concurrent_rounds.hpp) and of the event scheme's candidates (schemes/event_rounds.hpp), on enough
+// particles that the rounds run rather than fall back to one thread.
 class OneReplicaThreadIdentity : public ::testing::TestWithParam<int> {};
 
-INSTANTIATE_TEST_SUITE_P(Schemes, OneReplicaThreadIdentity, ::testing::Values(0, 2, 3, 5),
+INSTANTIATE_TEST_SUITE_P(Schemes, OneReplicaThreadIdentity, ::testing::Values(0, 1, 2, 3, 5),
                          [](const auto& info) { return scheme_name(info.param); });
 
 TEST_P(OneReplicaThreadIdentity, TwoAndFourThreadsInsideTheReplicaGiveTheBitsOfOne) {

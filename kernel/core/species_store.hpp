@@ -246,6 +246,25 @@ class BasicSpeciesStore {
     Real aux;  // the event scheme's last update
   };
   static_assert(sizeof(Record) == 4 * sizeof(Real));
+
+ public:
+  /// Particle k's record as it is, velocity and last-update time to the bit (the event scheme's concurrent
+  /// rounds keep what a candidate overwrites, schemes/event_rounds.hpp), and how to put it back. Packed: the
+  /// record's alignment would make it 64 bytes, and a round keeps thousands.
+  struct KeptRecord {
+    std::size_t k;
+    Real values[4];
+  };
+  [[nodiscard]] KeptRecord kept(std::size_t k) const noexcept {
+    const Record& r = records_[k];
+    return {k, {r.v[0], r.v[1], r.v[2], r.aux}};
+  }
+  void put_back(const KeptRecord& kept) noexcept {
+    Record& r = records_[kept.k];
+    r.v[0] = kept.values[0], r.v[1] = kept.values[1], r.v[2] = kept.values[2], r.aux = kept.values[3];
+  }
+
+ private:
   struct alignas(4 * sizeof(Real)) SpinRecord {
     Real s[3];
     Real unused;

@@ -33,6 +33,8 @@
 #include <numbers>
 #include <span>
 #include <stdexcept>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "kernel/collide/collision_kernel.hpp"
@@ -76,10 +78,10 @@ class BasicEventScheme {
   static constexpr bool disks = Kernel::dimension == 2;
 
  public:
-  /// From the scene's initial Maxwellian.
-  BasicEventScheme(const Scene& scene, std::uint64_t replica, Kernel kernel)
-      : BasicEventScheme(scene, replica, kernel, maxwellian_state<Real>(scene, RandomStream(scene.run.seed, replica))) {
-  }
+  /// From the scene's initial Maxwellian, drawn on `threads` threads (the same bits for any number).
+  BasicEventScheme(const Scene& scene, std::uint64_t replica, Kernel kernel, int threads = 1)
+      : BasicEventScheme(scene, replica, kernel,
+                         maxwellian_state<Real>(scene, RandomStream(scene.run.seed, replica), threads)) {}
 
   /// From a given initial state (one species, all last-update times 0, state.time = 0).
   BasicEventScheme(const Scene& scene, std::uint64_t replica, Kernel kernel, State initial)
@@ -132,11 +134,8 @@ class BasicEventScheme {
       for (std::size_t k = 0; k < particles_; ++k) store.set_last_update(k, s.time);
       store.restart_clock(s.time);
     }
-    draws_ = s.draws, syncs_ = s.syncs, tally_ = s.tally;
-    slot_ = static_cast<std::size_t>(draws_ % batch_size);  // next_slot's invariant
-    current_ = static_cast<unsigned>((draws_ / batch_size) % 2);
-    prepare(batches_[current_], draws_ - slot_);
-    prepare(batches_[current_ ^ 1u], draws_ - slot_ + batch_size);
+    syncs_ = s.syncs, tally_ = s.tally;
+    draw_from(s.draws);
     reset_majorant();
   }
   /// Current majorant U_max in scene velocity units.
@@ -144,34 +143,50 @@ class BasicEventScheme {
 
   /// Processes every candidate before t, then brings all particles to t (001 Remark 2 and step 3).
   void advance_to(double t) {
+    run_candidates(t, RandomStream::counter_limit);
+    end_interval(t);
+  }
+
+ private:
+  template <class Scheme>
+  friend class EventRounds;  // schemes/event_rounds.hpp: the candidates on several threads
+
+  /// The candidates before t in order, up to draw `end` (excluded); whether they ended because the next one's
+  /// time reached t.
+  bool run_candidates(double t, std::uint64_t end) {
     Store& store = state_.species[0];
-    for (;;) {
+    while (draws_ < end) {
       const DrawBatch& batch = batches_[current_];
       // A register of candidates at once where the batch has one left, else one candidate. Only for a
       // kernel with fictitious candidates under noise: with Maxwell's every candidate collides, in order,
       // and the register only added work (Example 7 at 10^5: 0.95-1.01 -> 1.08-1.14 s).
-      if constexpr (in_registers && !Kernel::constant_rate) {
+      if constexpr (registers) {
         if (noise_ != 0.0 && slot_ + lanes <= batch_size) {
-          const std::size_t done = candidates_in_simd(store, batch, slot_, t);
+          const std::size_t done = candidates_in_simd(store, batch, slot_, t, end - draws_, batches_[current_ ^ 1u]);
           for (std::size_t k = 0; k < done; ++k) next_slot();
           if (done != 0) continue;
         }
       }
       const double next = state_.time + batch.wait[slot_] / candidate_rate_;  // 001 step 2.1
-      if (!(next < t)) break;  // memoryless: the draw is discarded and the process restarts at t
+      if (!(next < t)) return true;
       state_.time = next;
-      candidate(store, batch, slot_);
+      candidate(store, batch, slot_, next);
       next_draw();
     }
+    return false;
+  }
+
+  /// After the candidates before t: the draw that reached t is discarded (the process is memoryless and restarts
+  /// at t), every particle is brought to t, and U_max is set from the state.
+  void end_interval(double t) {
     next_draw();
     if (!(draws_ < RandomStream::counter_limit)) throw std::runtime_error("event scheme: random counter exhausted");
     state_.time = t;
-    if (noise_ != 0.0) bring_all_to(store, t);
+    if (noise_ != 0.0) bring_all_to(state_.species[0], t);
     ++syncs_;
     reset_majorant();
   }
 
- private:
   /// U_max := value, and with it pi_hat = rate_prefactor U_max^lambda (001 eq. 25): computed where U_max
   /// changes, not at every draw (a pow per candidate was a tenth of a VHS candidate's time).
   void set_majorant(double value) noexcept {
@@ -185,7 +200,8 @@ class BasicEventScheme {
   /// normals of the two Brownian increments (three Box-Muller pairs). A batch is prepared while the one
   /// before it is consumed, so the pairs' records can be prefetched batch_size draws ahead of their use
   /// (prefetch_pair), and the logs and polynomials run in SIMD (core/batch_variates.hpp). The candidates
-  /// still act one after the other, in draw order.
+  /// still act one after the other, in draw order. With pairs_only, only i, j and wait (what a note of
+  /// the candidates in a concurrent round needs, schemes/event_rounds.hpp).
   static constexpr std::size_t batch_size = 32;
   struct DrawBatch {
     std::array<std::size_t, batch_size> i{}, j{};
@@ -197,6 +213,7 @@ class BasicEventScheme {
     std::array<double, 3 * batch_size> normal1{}, normal2{};
   };
 
+  template <bool pairs_only = false>
   void prepare(DrawBatch& batch, std::uint64_t first) const noexcept {
     constexpr std::size_t b = batch_size;
     std::array<double, b> e1, e2;
@@ -232,6 +249,10 @@ class BasicEventScheme {
       batch.i[k] = is[k];
       batch.j[k] = js[k] + (js[k] >= is[k] ? 1 : 0);  // step 2.4: uniform on j != i
       batch.wait[k] = uniform_open(w[0][k]);
+    }
+    negative_log_in_place(std::span(batch.wait));
+    if constexpr (pairs_only) return;
+    for (std::size_t k = 0; k < b; ++k) {
       batch.threshold[k] = uniform_open(w[3][k]);
       e1[k] = uniform_open(w[2][b + k]);
       e2[k] = uniform_open(w[3][b + k]);
@@ -249,7 +270,6 @@ class BasicEventScheme {
         u2[2 * b + k] = uniform_open(z[1][b + k]);
       }
     }
-    negative_log_in_place(std::span(batch.wait));
     kernel_.acceptance_thresholds(std::span(batch.threshold));
     scattering_variates<Kernel>(std::span<const double, b>(e1), std::span<const double, b>(e2), std::span(batch.ex),
                                 std::span(batch.ey), std::span(batch.ez));
@@ -279,6 +299,14 @@ class BasicEventScheme {
   void next_draw() noexcept {
     prefetch_pair(batches_[current_ ^ 1u], slot_);
     next_slot();
+  }
+  /// The draws from d on: draws_ = d, with the batches prepared from there (next_slot's invariant).
+  void draw_from(std::uint64_t d) noexcept {
+    draws_ = d;
+    slot_ = static_cast<std::size_t>(d % batch_size);
+    current_ = static_cast<unsigned>((d / batch_size) % 2);
+    prepare(batches_[current_], d - slot_);
+    prepare(batches_[current_ ^ 1u], d - slot_ + batch_size);
   }
   /// next_draw without the prefetch (candidates_in_simd issues its own).
   void next_slot() noexcept {
@@ -313,12 +341,28 @@ class BasicEventScheme {
   /// 2.9-2.10. This holds while the candidates share no particle and U_max stays: the register is done
   /// up to the first candidate (excluded) whose particles could raise U_max at step 2.7 or whose test
   /// lies within the rounding margin (both left to `candidate`), or up to a raise at step 2.10 (included:
-  /// the later times depend on the new pi_hat), or up to t_end (excluded). Returns how many were done;
-  /// none when the register's particles are not all different or the first is left to `candidate`. The
-  /// same operations on the same values as `candidate`: the same bits (tests/test_event_scheme.cpp).
+  /// the later times depend on the new pi_hat), or up to t_end (excluded), and at most `most`. Returns how many
+  /// were done; none when the register's particles are not all different or the first is left to `candidate`.
+  /// The same operations on the same values as `candidate`: the same bits (tests/test_event_scheme.cpp). The
+  /// pairs of the batch `next` are prefetched a batch ahead. A follower's register in a concurrent round
+  /// (schemes/event_rounds.hpp) starts at its time, keeps the records it overwrites, counts in its tally and tests
+  /// against the round's U_max; where step 2.10 would raise that, it ends and sets follower->in_order.
   static constexpr std::size_t lanes = SimdDouble::size;
-  std::size_t candidates_in_simd(Store& store, const DrawBatch& batch, std::size_t k, double t_end) {
+  static constexpr bool registers = in_registers && !Kernel::constant_rate;
+  template <class Follower = void>
+  std::size_t candidates_in_simd(Store& store, const DrawBatch& batch, std::size_t k, double t_end, std::uint64_t most,
+                                 const DrawBatch& next, Follower* follower = nullptr) {
     static_assert(!Kernel::constant_rate, "with Maxwell's kernel the candidates go one by one (advance_to)");
+    constexpr bool in_round = !std::is_void_v<Follower>;
+    // Where the register starts and the U_max it tests against: the scheme's, or the follower's (the round's
+    // start; the leader changes the scheme's meanwhile)
+    const auto [start, rate, majorant, majorant2, reference] = [&] {
+      if constexpr (in_round) {
+        return std::tuple{follower->now, follower->rate, follower->majorant, follower->majorant2, follower->reference};
+      } else {
+        return std::tuple{state_.time, candidate_rate_, majorant_, majorant2_, reference_};
+      }
+    }();
     using Indices = xsimd::batch<std::uint64_t, SimdDouble::arch_type>;
     static_assert(Indices::size == lanes && sizeof(std::size_t) == sizeof(std::uint64_t));
     if (!all_different(Indices::load_unaligned(reinterpret_cast<const std::uint64_t*>(&batch.i[k])),
@@ -326,9 +370,9 @@ class BasicEventScheme {
       return 0;
     // Step 2.1: the candidate times, added in order as `advance_to` does
     alignas(64) std::array<double, lanes> time;
-    (SimdDouble::load_unaligned(&batch.wait[k]) / candidate_rate_).store_aligned(time.data());
+    (SimdDouble::load_unaligned(&batch.wait[k]) / rate).store_aligned(time.data());
     std::size_t active = 0;
-    for (double now = state_.time; active < lanes; ++active) {
+    for (double now = start; active < std::min<std::uint64_t>(lanes, most); ++active) {
       now += time[active];
       if (!(now < t_end)) break;
       time[active] = now;
@@ -336,7 +380,7 @@ class BasicEventScheme {
     if (active == 0) return 0;
     // The pairs a batch ahead, half now and half below, so that the misses do not come all at once (a
     // register stopped early prefetches some of its slots twice)
-    for (std::size_t l = 0; l < lanes / 2; ++l) prefetch_pair(batches_[current_ ^ 1u], k + l);
+    for (std::size_t l = 0; l < lanes / 2; ++l) prefetch_pair(next, k + l);
     SimdDouble xi, yi, zi, ti, xj, yj, zj, tj;
     store.load_lanes(&batch.i[k], xi, yi, zi, ti);
     store.load_lanes(&batch.j[k], xj, yj, zj, tj);
@@ -357,22 +401,23 @@ class BasicEventScheme {
     brownian(ti, xi, yi, zi, &z1[k], &z2[k], &z1[b + k]);
     brownian(tj, xj, yj, zj, &z2[b + k], &z1[2 * b + k], &z2[2 * b + k]);
     // Steps 2.7-2.8 as bits: real, and left to `candidate` (the register stops before it)
-    const SimdDouble rx(reference_.x), ry(reference_.y), rz(reference_.z);
+    const SimdDouble rx(reference.x), ry(reference.y), rz(reference.z);
     auto far2 = [&](const SimdDouble& x, const SimdDouble& y, const SimdDouble& z) {
       const SimdDouble dx = x - rx, dy = y - ry, dz = z - rz;
       return dx * dx + dy * dy + dz * dz;
     };
-    const SimdDouble below(raise_below());
+    const SimdDouble below(raise_below(majorant2));
     const SimdDouble dx = xi - xj, dy = yi - yj, dz = zi - zj;
     const SimdDouble g2 = dx * dx + dy * dy + dz * dz;
-    const SimdDouble accept = SimdDouble::load_unaligned(&batch.threshold[k]) * majorant_, accept2 = accept * accept;
+    const SimdDouble accept = SimdDouble::load_unaligned(&batch.threshold[k]) * majorant, accept2 = accept * accept;
     const auto fictitious = g2 < accept2 * (1.0 - rounding_margin);
     const auto certain =
-        (g2 > accept2 * (1.0 + rounding_margin)) & (g2 < SimdDouble(majorant2_ * (1.0 - rounding_margin)));
+        (g2 > accept2 * (1.0 + rounding_margin)) & (g2 < SimdDouble(majorant2 * (1.0 - rounding_margin)));
     const std::uint64_t real = lane_bits(certain);
     const std::uint64_t stop = (std::uint64_t{1} << active) | ~lane_bits(fictitious | certain) |
                                ~lane_bits((far2(xi, yi, zi) < below) & (far2(xj, yj, zj) < below));
-    for (std::size_t l = lanes / 2; l < lanes; ++l) prefetch_pair(batches_[current_ ^ 1u], k + l);
+    for (std::size_t l = lanes / 2; l < lanes; ++l) prefetch_pair(next, k + l);
+    EventTally& tally = tally_of(follower);
     std::size_t done = static_cast<std::size_t>(std::countr_zero(stop));
     // Steps 2.9-2.10 in order for the real candidates before the stop; a raise at 2.10 ends the register
     if (std::uint64_t collide = real & ((std::uint64_t{1} << done) - 1); collide != 0) {
@@ -387,8 +432,14 @@ class BasicEventScheme {
         vj = Store::as_stored(vj);
         ax[l] = vi.x, ay[l] = vi.y, az[l] = vi.z;
         bx[l] = vj.x, by[l] = vj.y, bz[l] = vj.z;
-        ++tally_.collisions;
-        if (raise_majorant(vi, vj)) {  // step 2.10
+        ++tally.collisions;
+        if constexpr (in_round) {  // step 2.10 against the round's U_max
+          if (raised_majorant(vi, vj, reference, majorant, majorant2) != 0.0) {
+            follower->in_order = true;
+            done = l + 1;
+            break;
+          }
+        } else if (raise_majorant(vi, vj)) {  // step 2.10
           done = l + 1;
           break;
         }
@@ -398,17 +449,32 @@ class BasicEventScheme {
       xj = SimdDouble::load_aligned(bx.data()), yj = SimdDouble::load_aligned(by.data()),
       zj = SimdDouble::load_aligned(bz.data());
     }
+    if constexpr (in_round) {
+      for (std::size_t l = 0; l < done; ++l) follower->keep(store, batch.i[k + l], batch.j[k + l]);
+    }
     store.store_lanes(&batch.i[k], done, xi, yi, zi, t);
     store.store_lanes(&batch.j[k], done, xj, yj, zj, t);
-    tally_.candidates += done;
-    if (done != 0) state_.time = time[done - 1];
+    tally.candidates += done;
+    if (done != 0) {
+      if constexpr (in_round) {
+        follower->now = time[done - 1];
+      } else {
+        state_.time = time[done - 1];
+      }
+    }
     return done;
   }
 
-  /// One candidate at state_.time: 001 steps 2.5-2.10, with slot k of the batch.
-  void candidate(Store& store, const DrawBatch& batch, std::size_t k) {
+  /// One candidate at its time t: 001 steps 2.5-2.10, with slot k of the batch. On its own (no follower) it
+  /// raises U_max at steps 2.7 and 2.10 and counts in tally_. As a follower's candidate in a concurrent round
+  /// (schemes/event_rounds.hpp) it keeps the two records before it writes them, counts in the follower's tally
+  /// and tests against the U_max of the round's start; where it would raise that U_max or exceed it, it stops
+  /// and returns false (the round then runs in order).
+  template <class Follower = void>
+  bool candidate(Store& store, const DrawBatch& batch, std::size_t k, double t, Follower* follower = nullptr) {
+    constexpr bool in_round = !std::is_void_v<Follower>;
     const std::size_t i = batch.i[k], j = batch.j[k];
-    const double t = state_.time;
+    if constexpr (in_round) follower->keep(store, i, j);
     if (noise_ != 0.0) {  // steps 2.5-2.6
       const auto& z1 = batch.normal1;
       const auto& z2 = batch.normal2;
@@ -416,15 +482,23 @@ class BasicEventScheme {
       brownian_update(store, i, t, {z1[k], z2[k], z1[b + k]});
       brownian_update(store, j, t, {z2[b + k], z1[2 * b + k], z2[2 * b + k]});
     }
-    ++tally_.candidates;
+    EventTally& tally = tally_of(follower);
+    ++tally.candidates;
     Vec3 vi = store.velocity(i), vj = store.velocity(j);
     if constexpr (!Kernel::constant_rate) {
-      const double drawn_with = majorant_, drawn_with2 = majorant2_;
-      raise_majorant(vi, vj);                                                           // step 2.7
+      const auto [drawn_with, drawn_with2] = [&] {
+        if constexpr (in_round) {
+          return std::pair{follower->majorant, follower->majorant2};
+        } else {
+          return std::pair{majorant_, majorant2_};
+        }
+      }();
+      if (!raise_majorant(vi, vj, follower)) return false;                              // step 2.7
       switch (thinning(norm2(vi - vj), batch.threshold[k], drawn_with, drawn_with2)) {  // step 2.8
         case Thinning::fictitious:
-          return;
+          return true;
         case Thinning::violation:
+          if constexpr (in_round) return false;
           ++tally_.majorant_violations;
           break;
         case Thinning::real:
@@ -434,9 +508,20 @@ class BasicEventScheme {
     scatter(vi, vj, batch, k);  // step 2.9
     store.set_velocity(i, vi);
     store.set_velocity(j, vj);
-    ++tally_.collisions;
+    ++tally.collisions;
     // step 2.10, on the velocities as stored (rounded, with float storage), which later candidates read
-    if constexpr (!Kernel::constant_rate) raise_majorant(store.velocity(i), store.velocity(j));
+    if constexpr (!Kernel::constant_rate) return raise_majorant(store.velocity(i), store.velocity(j), follower);
+    return true;
+  }
+
+  /// Where a candidate counts: tally_, or a follower's own tally in a concurrent round.
+  template <class Follower>
+  EventTally& tally_of(Follower* follower) noexcept {
+    if constexpr (std::is_void_v<Follower>) {
+      return tally_;
+    } else {
+      return follower->tally;
+    }
   }
 
   /// Step 2.9 with slot k's draw (collide/rate_form_scattering.hpp).
@@ -444,19 +529,36 @@ class BasicEventScheme {
     rate_form_scattering<Kernel>(vi, vj, {batch.ex[k], batch.ey[k], batch.ez[k]}, alpha_, pair_);
   }
 
-  /// Steps 2.7 and 2.10: U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|); whether it rose. The square
-  /// root is taken only when the squares are within the rounding margin of (U_max / 2)^2 or above it.
+  /// Steps 2.7 and 2.10: U_max := max(U_max, 2 |v_i - V|, 2 |v_j - V|); whether it rose.
   bool raise_majorant(const Vec3& vi, const Vec3& vj) noexcept {
-    const double far2 = std::max(norm2(vi - reference_), norm2(vj - reference_));
-    if (far2 < raise_below()) return false;
-    const double bound = 2.0 * std::sqrt(far2);
-    if (!(bound > majorant_)) return false;
+    const double bound = raised_majorant(vi, vj, reference_, majorant_, majorant2_);
+    if (bound == 0.0) return false;
     set_majorant(bound);
     ++tally_.majorant_updates;
     return true;
   }
-  /// |v - V|^2 below this cannot raise U_max.
-  [[nodiscard]] double raise_below() const noexcept { return 0.25 * majorant2_ * (1.0 - rounding_margin); }
+  /// Steps 2.7 and 2.10 in `candidate`: on its own, raise_majorant, and go on (true); a follower's candidate goes
+  /// on only if it leaves the round's U_max as it is.
+  template <class Follower>
+  bool raise_majorant(const Vec3& vi, const Vec3& vj, Follower* follower) noexcept {
+    if constexpr (std::is_void_v<Follower>) {
+      raise_majorant(vi, vj);
+      return true;
+    } else {
+      return raised_majorant(vi, vj, follower->reference, follower->majorant, follower->majorant2) == 0.0;
+    }
+  }
+  /// 2 max(|v_i - V|, |v_j - V|) where it exceeds U_max = majorant (majorant2 its square), else 0. The square
+  /// root is taken only when the squares are within the rounding margin of (U_max / 2)^2 or above it.
+  static double raised_majorant(const Vec3& vi, const Vec3& vj, const Vec3& reference, double majorant,
+                                double majorant2) noexcept {
+    const double far2 = std::max(norm2(vi - reference), norm2(vj - reference));
+    if (far2 < raise_below(majorant2)) return 0.0;
+    const double bound = 2.0 * std::sqrt(far2);
+    return bound > majorant ? bound : 0.0;
+  }
+  /// |v - V|^2 below this cannot raise the U_max whose square is majorant2.
+  static double raise_below(double majorant2) noexcept { return 0.25 * majorant2 * (1.0 - rounding_margin); }
 
   /// V := bulk velocity, U_max := 2 max_j |v_j - V| (001 steps 1.3-1.4), with every particle current.
   void reset_majorant() noexcept {

@@ -289,9 +289,10 @@ PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int thread
   PlanExplanation out;
   out.instantiation = instantiation_name(plan, scene);
   // The run's own share (schemes/replica_runner.hpp): threads left over by the replicas go inside them where
-  // the time-stepped scheme's batched stage runs them in concurrent rounds.
+  // the time-stepped scheme's batched stage or the event scheme runs them in concurrent rounds.
   const auto* stepped = std::get_if<SteppedPlan>(&plan.scheme);
-  const bool rounds = stepped != nullptr && std::holds_alternative<BatchedStage>(stepped->backend);
+  const bool rounds = (stepped != nullptr && std::holds_alternative<BatchedStage>(stepped->backend)) ||
+                      std::holds_alternative<EventPlan>(plan.scheme);
   RunOptions options;
   options.threads = threads;
   options.threads_per_replica = threads_per_replica;

@@ -20,7 +20,7 @@ struct PlanExplanation {
   std::uint64_t particle_bytes = 0;     // particle memory of the replicas in flight at once
   int replicas_in_flight = 1;           // min(threads, replicas)
   int threads_per_replica = 1;          // threads inside each replica (share_threads)
-  bool threads_inside = false;          // whether a replica can use more than one thread (time-stepped, batched stage)
+  bool threads_inside = false;          // whether a replica can use more than one thread (batched stage, event scheme)
   double candidates = 0.0;              // estimated candidate pairs, all replicas (gas)
   double events = 0.0;                  // estimated collision events, all replicas (intruder)
   bool candidates_upper_bound = false;  // true when the estimate assumes T stays at T(0)

@@ -18,6 +18,16 @@ namespace granmc {
 
 namespace {
 
+/// A replica's round counts into the run's, from the replicas' threads.
+void add_round_counts(CollisionRoundCounts& run, const CollisionRoundCounts& replica) {
+#pragma omp critical(granmc_round_counts)
+  {
+    run.rounds += replica.rounds;
+    run.deferred += replica.deferred;
+    run.in_order += replica.in_order;
+  }
+}
+
 /// The time-stepped scheme with the plan's kernel and effects: the replicas over the threads with the batched
 /// backend (threads left over inside the replicas, in concurrent collision rounds), or, with the rank waves, every
 /// replica spread over options.spread, one after another.
@@ -42,13 +52,7 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Kernel& 
           BasicDsmc<Backend, Real, Kernel, Effects...> sim(scene, replica, Backend(scene, share.inside), kernel,
                                                            effects...);
           ReplicaSeries series = run_dsmc_replica(sim, scene, times, replica, options);
-          const CollisionRoundCounts& its = sim.backend().rounds().counts;
-#pragma omp critical(granmc_round_counts)
-          {
-            rounds.rounds += its.rounds;
-            rounds.deferred += its.deferred;
-            rounds.in_order += its.in_order;
-          }
+          add_round_counts(rounds, sim.backend().rounds().counts);
           return series;
         });
     result.rounds = rounds;
@@ -81,9 +85,18 @@ RunResult run(const EventPlan& plan, const Scene& scene, const RunOptions& optio
   return std::visit(
       [&](const auto& kernel, auto storage) {
         using Real = typename decltype(storage)::type;
-        return run_replicas(scene, options, [&](std::uint64_t replica, const std::vector<double>& times) {
-          return run_event_replica<Real>(scene, replica, times, options, kernel);
-        });
+        const ThreadShare share = share_threads(scene, options, any_threads_inside);
+        CollisionRoundCounts rounds;
+        RunResult result =
+            run_replicas(scene, options, share, [&](std::uint64_t replica, const std::vector<double>& times) {
+              CollisionRoundCounts its;
+              ReplicaSeries series =
+                  run_event_replica<Real>(scene, replica, times, options, kernel, share.inside, &its);
+              add_round_counts(rounds, its);
+              return series;
+            });
+        result.rounds = rounds;
+        return result;
       },
       plan.kernel, plan.storage);
 }
