@@ -42,6 +42,14 @@ class PinnedThread {
     if (pinned_) pthread_setaffinity_np(pthread_self(), sizeof(saved_), &saved_);
 #endif
   }
+  /// The index for the calling thread of a replica's team (`team` threads, inside the replicas' team of an
+  /// enclosing parallel region, schemes/replica_runner.hpp): thread t of the replica in slot k takes CPU k team + t,
+  /// so that the replicas' teams run side by side.
+  static int replica_thread_index(int team) noexcept {
+    const int level = omp_get_level();
+    const int slot = level > 1 ? omp_get_ancestor_thread_num(level - 1) : 0;
+    return slot * team + omp_get_thread_num();
+  }
   PinnedThread(const PinnedThread&) = delete;
   PinnedThread& operator=(const PinnedThread&) = delete;
 

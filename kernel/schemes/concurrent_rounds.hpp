@@ -97,10 +97,7 @@ void collide_in_rounds(BasicGasState<Real>& state, std::span<const PairCoefficie
   {
     const auto team = static_cast<std::uint64_t>(omp_get_num_threads());
     const auto t = static_cast<std::uint64_t>(omp_get_thread_num());
-    // Thread t of the replica in slot k of the replicas' team takes CPU k T + t (replica_runner.hpp).
-    const int level = omp_get_level();
-    const int slot = level > 1 ? omp_get_ancestor_thread_num(level - 1) : 0;
-    const PinnedThread pinned(slot * static_cast<int>(team) + static_cast<int>(t));
+    const PinnedThread pinned(PinnedThread::replica_thread_index(static_cast<int>(team)));
 #pragma omp single
     barrier.emplace(static_cast<int>(team));
     std::optional<Follower> stage;

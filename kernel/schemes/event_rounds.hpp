@@ -257,10 +257,7 @@ void EventRounds<Scheme>::advance_to(Scheme& scheme, double t) {
   {
     const auto team = static_cast<std::uint64_t>(omp_get_num_threads());
     const auto u = static_cast<std::uint64_t>(omp_get_thread_num());
-    // Thread u of the replica in slot k of the replicas' team takes CPU k T + u (replica_runner.hpp).
-    const int level = omp_get_level();
-    const int slot = level > 1 ? omp_get_ancestor_thread_num(level - 1) : 0;
-    const PinnedThread pinned(slot * static_cast<int>(team) + static_cast<int>(u));
+    const PinnedThread pinned(PinnedThread::replica_thread_index(static_cast<int>(team)));
     if (u > 0 && !followers_[u]) followers_[u] = std::make_unique<Follower>();
 #pragma omp single
     {
