@@ -2,6 +2,7 @@
 // make_plan, with a reason naming what is not supported, or runs through the dispatch, which compiles only
 // the supported products; the plan holds the evaluators with the scene's parameters; the name and the
 // explanation are read off the plan.
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
@@ -201,4 +202,24 @@ TEST(RunPlan, EveryRateClassOfTheTimeEstimateHasAMeasuredRate) {
     EXPECT_GT(measured_candidates_per_second(named), 0.0) << named;
   }
   EXPECT_THROW(measured_candidates_per_second("stepped.on_the_moon"), std::runtime_error);
+}
+
+// Elastic particles keep their temperature: the candidates' estimate is the limit alpha -> 1 of the cooling
+// gas's (Haff's law), not 0/0.
+TEST(RunPlan, TheCandidatesOfAnElasticGasAreTheLimitOfACoolingOnes) {
+  const auto candidates = [](double alpha) {
+    const Scene scene = parse_scene(
+        "[run]\nt_end = 2.0\ndt = 0.1\nsamples = 1\n[[species]]\nparticles = 1000\n"
+        "[collision]\nrestitution = " +
+            std::to_string(alpha) + "\n",
+        "elastic.toml");
+    const PlanExplanation what = explain_plan(make_plan(scene), scene, 1);
+    EXPECT_FALSE(what.candidates_upper_bound);
+    return what.candidates;
+  };
+  const double elastic = candidates(1.0);
+  EXPECT_TRUE(std::isfinite(elastic));
+  EXPECT_GT(elastic, 0.0);
+  EXPECT_NEAR(candidates(0.999999), elastic, 1e-5 * elastic);
+  EXPECT_LT(candidates(0.9), elastic);  // a cooling gas slows down
 }

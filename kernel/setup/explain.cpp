@@ -171,7 +171,8 @@ void explain(const SteppedPlan& plan, const Scene& scene, PlanExplanation& out) 
   double u_time = scene.run.t_end;  // int_0^t_end u(t)/u(0) dt
   out.candidates_upper_bound = scene.thermostat.kind != ThermostatKind::gaussian;
   if (const auto hcs = theory::cooling_state(scene, {})) {
-    u_time = 2.0 / hcs->cooling_rate0 * std::log1p(0.5 * hcs->cooling_rate0 * scene.run.t_end);
+    const double zeta0 = hcs->cooling_rate0;  // 0 for elastic particles, whose temperature stays at T(0)
+    u_time = zeta0 > 0.0 ? 2.0 / zeta0 * std::log1p(0.5 * zeta0 * scene.run.t_end) : scene.run.t_end;
     out.candidates_upper_bound = false;
   }
   const double u0 = std::sqrt(scene.initial_temperature);
