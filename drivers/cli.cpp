@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -24,6 +26,7 @@
 #include "io/theory_json.hpp"
 #include "kernel/analysis/bath_probe.hpp"
 #include "kernel/schemes/rank_wave_backend.hpp"
+#include "kernel/schemes/replica_runner.hpp"
 #include "kernel/setup/explain.hpp"
 #include "kernel/setup/run_plan.hpp"
 
@@ -31,12 +34,17 @@ namespace granmc {
 
 namespace {
 
+/// "10^k" for a power of ten n.
+std::string power_of_ten(std::uint64_t n) {
+  return "10^" + std::to_string(std::lround(std::log10(static_cast<double>(n))));
+}
+
 struct RunArgs {
   std::string scene;
   std::string out;
   std::string summary;
   int threads = 0;
-  int threads_per_replica = 1;
+  int threads_per_replica = 0;  // 0: by the replicas' size (share_threads)
   std::optional<std::uint64_t> seed;
   bool quiet = false;
   bool explain = false;
@@ -122,6 +130,12 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
         "same bits as on one; faster for replicas of millions of particles, slower for small ones "
         "(docs/user-guide/parallel-runs.md)\n",
         what.replicas_in_flight, what.threads_per_replica);
+  else if (threads > what.replicas_in_flight && what.threads_inside && args.threads_per_replica == 0)
+    std::printf(
+        "threads      %d replica(s) at a time, one thread each; %d thread(s) idle (by default threads go "
+        "inside replicas of at least %s particles, where the rounds are faster than one thread; "
+        "--threads-per-replica puts them inside smaller ones, docs/user-guide/parallel-runs.md)\n",
+        what.replicas_in_flight, threads - what.replicas_in_flight, power_of_ten(what.least_particles_inside).c_str());
   else if (threads > what.replicas_in_flight)
     std::printf("threads      %d replica(s) at a time, one thread each; %d thread(s) idle%s\n", what.replicas_in_flight,
                 threads - what.replicas_in_flight,
@@ -332,8 +346,11 @@ int cli_main(int argc, char** argv) {
   run_cmd
       ->add_option("--threads-per-replica", run.threads_per_replica,
                    "At most this many threads inside one replica, for threads the replicas leave over (time-stepped "
-                   "and event schemes: the candidates in concurrent rounds, the same bits; default 1: "
-                   "docs/user-guide/parallel-runs.md)")
+                   "and event schemes: the candidates in concurrent rounds, the same bits; default: all of them, "
+                   "for replicas of at least " +
+                       power_of_ten(stepped_rounds_inside.least_particles) + " particles (time-stepped) or " +
+                       power_of_ten(event_rounds_inside.least_particles) +
+                       " (event), else 1: docs/user-guide/parallel-runs.md)")
       ->check(CLI::Range(1, 4096));
   run_cmd->add_option("--seed", run.seed, "Override the scene's run.seed");
   run_cmd->add_flag("--quiet", run.quiet, "No progress line and no closing message");
@@ -371,8 +388,8 @@ int cli_main(int argc, char** argv) {
   sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   sweep_cmd
       ->add_option("--threads-per-replica", sweep.threads_per_replica,
-                   "As for granmc run: at most this many threads inside one replica (default 1: "
-                   "docs/user-guide/parallel-runs.md)")
+                   "As for granmc run: at most this many threads inside one replica (default: by the replicas' "
+                   "size, docs/user-guide/parallel-runs.md)")
       ->check(CLI::Range(1, 4096));
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress lines, no notes on skipped scenes, no closing message");
   sweep_cmd->add_flag("--keep-other-builds", sweep.keep_other_builds,

@@ -51,7 +51,7 @@ struct JobResult {
 /// checkpoints this rank's replicas through it (drivers/run_checkpoints.hpp), keeps them there before the gather,
 /// and throws RunInterrupted when a signal stopped it.
 JobResult run_job(const Scene& scene, const RunPlan& plan, const JobOutputs& outputs, int threads, bool quiet,
-                  int threads_per_replica = 1, RunCheckpoints* checkpoints = nullptr);
+                  int threads_per_replica = 0, RunCheckpoints* checkpoints = nullptr);
 
 /// A failure during a run: one message and exit status 1. Over several MPI ranks the message names the rank
 /// and every rank is ended (MPI_Abort), so that none waits for it.

@@ -15,7 +15,7 @@ struct SweepArgs {
   std::string sweep;            // the sweep file
   std::string out_dir;          // empty: the sweep file's stem, in the current directory
   int threads = 0;              // 0: the OpenMP default
-  int threads_per_replica = 1;  // at most this many inside one replica (run_job)
+  int threads_per_replica = 0;  // at most this many inside one replica (run_job; 0: by the replicas' size)
   bool quiet = false;
   bool keep_other_builds = false;  // keep the files of scenes done by another build of granmc (not rerun)
 };

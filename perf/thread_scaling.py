@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Wall time of `granmc run` on one thread and on two, for the tables of docs/developer-guide/scaling.md
-("Concurrent collision rounds", "The event scheme's rounds"): one replica of 10^7, 10^6 and 10^5 particles with
-its two threads inside it (--threads-per-replica 2), and two replicas of 10^7 and of 10^6 with one thread each;
-the event scheme's one replica of 10^7 with two threads inside it and two replicas of 10^7.
+("Concurrent collision rounds", "The event scheme's rounds"): one replica of 10^7, 10^6, 4 10^5, 2 10^5 and 10^5
+particles with its two threads inside it (--threads-per-replica 2), and two replicas of 10^7 and of 10^6 with one
+thread each; the event scheme's one replica of 10^7, 10^6 and 10^5 with two threads inside it and two replicas of
+10^7. The sizes below 10^6 (10^5 for the event scheme) are where two threads stop paying, which sets the default
+(kernel/schemes/replica_runner.hpp, share_threads).
 
 Usage: /usr/bin/python3 perf/thread_scaling.py [--granmc build/bin/granmc] [--runs 3] [--work DIR]
-       (`make bench-threads`; about 3 minutes per run on this 2-core host)
+       (`make bench-threads`; about 5 minutes per run on this 2-core host)
 
 The figure is the summary's wall_seconds (granmc's own wall time, set-up included). The one- and two-thread
 runs of a scene alternate, so that they share the state of the (shared, noisy) machine; the script prints
@@ -28,11 +30,15 @@ SCENES = os.path.join(ROOT, "drivers", "scenes", "scaling")
 CASES = [  # scene, the two-thread run's extra arguments, what it measures
     ("one_replica_1e7.toml", ["--threads-per-replica", "2"], "one replica of 10^7, 2 threads inside it"),
     ("one_replica_1e6.toml", ["--threads-per-replica", "2"], "one replica of 10^6, 2 threads inside it"),
+    ("one_replica_4e5.toml", ["--threads-per-replica", "2"], "one replica of 4 10^5, 2 threads inside it"),
+    ("one_replica_2e5.toml", ["--threads-per-replica", "2"], "one replica of 2 10^5, 2 threads inside it"),
     ("one_replica_1e5.toml", ["--threads-per-replica", "2"], "one replica of 10^5, 2 threads inside it"),
     ("two_replicas_1e7.toml", [], "two replicas of 10^7, one thread each"),
     ("two_replicas_1e6.toml", [], "two replicas of 10^6, one thread each"),
     ("event_one_replica_1e7.toml", ["--threads-per-replica", "2"], "event scheme, one replica of 10^7, 2 threads inside it"),
     ("event_two_replicas_1e7.toml", [], "event scheme, two replicas of 10^7, one thread each"),
+    ("event_one_replica_1e6.toml", ["--threads-per-replica", "2"], "event scheme, one replica of 10^6, 2 threads inside it"),
+    ("event_one_replica_1e5.toml", ["--threads-per-replica", "2"], "event scheme, one replica of 10^5, 2 threads inside it"),
 ]
 
 

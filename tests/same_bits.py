@@ -69,7 +69,7 @@ def shrunk_sweep(scene_path, particles, replicas, folder):
 def run(granmc, sweep, out_dir, threads, reuse, threads_per_replica=1):
     """The HDF5 file of the sweep's one scene run by `granmc` in out_dir; with `reuse`, a file already there
     from the same sweep text is kept (the reference build's files, between calls with the same --work).
-    threads_per_replica > 1 is passed on as --threads-per-replica."""
+    threads_per_replica is passed on as --threads-per-replica."""
     done = os.path.join(out_dir, "sweep.toml")
     with open(sweep) as f:
         text = f.read()
@@ -77,9 +77,8 @@ def run(granmc, sweep, out_dir, threads, reuse, threads_per_replica=1):
         (h5,) = [os.path.join(out_dir, n) for n in os.listdir(out_dir) if n.endswith(".h5")]
         return h5
     shutil.rmtree(out_dir, ignore_errors=True)
-    inside = ["--threads-per-replica", str(threads_per_replica)] if threads_per_replica > 1 else []
-    subprocess.run([granmc, "sweep", sweep, "--out-dir", out_dir, "--threads", str(threads), "--quiet"] + inside,
-                   check=True)
+    subprocess.run([granmc, "sweep", sweep, "--out-dir", out_dir, "--threads", str(threads), "--quiet",
+                    "--threads-per-replica", str(threads_per_replica)], check=True)
     (h5,) = [os.path.join(out_dir, n) for n in os.listdir(out_dir) if n.endswith(".h5")]
     with open(done, "w") as f:
         f.write(text)

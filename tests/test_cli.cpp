@@ -86,7 +86,7 @@ TEST_F(Cli, ThreadsInsideOneReplicaWriteTheSameNumbers) {
   nlohmann::json one = nlohmann::json::parse(slurp(dir_ / "one.json"));
   nlohmann::json two = nlohmann::json::parse(slurp(dir_ / "two.json"));
   nlohmann::json in = nlohmann::json::parse(slurp(dir_ / "in.json"));
-  EXPECT_EQ(two["threads_per_replica"], 1) << "one thread per replica unless asked for";
+  EXPECT_EQ(two["threads_per_replica"], 1) << "a replica of 20000 particles keeps one thread unless asked";
   EXPECT_EQ(in["threads_per_replica"], 2);
   EXPECT_GT(in["collision_rounds"].get<std::uint64_t>(), 0u) << "the rounds ran, not only the in-order fallback";
   for (auto* j : {&one, &in})

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "kernel/schemes/replica_runner.hpp"
 #include "kernel/setup/run_scene.hpp"
 #include "tests/test_scenes.hpp"
 
@@ -267,4 +268,37 @@ TEST_P(OneReplicaThreadIdentity, TwoAndFourThreadsInsideTheReplicaGiveTheBitsOfO
       EXPECT_TRUE(bit_identical(x.shear->pressure_collisional, y.shear->pressure_collisional));
     }
   }
+}
+
+TEST(ThreadShare, ByDefaultThreadsGoInsideOnlyReplicasLargeEnoughForTheRounds) {
+  Scene scene = small_cooling_scene();
+  scene.run.replicas = 1;
+  RunOptions options;
+  options.threads = 4;
+  const auto inside = [&](std::int64_t particles, const ThreadsInside& rule) {
+    scene.species[0].particles = particles;
+    return share_threads(scene, options, rule).inside;
+  };
+  const auto least = static_cast<std::int64_t>(stepped_rounds_inside.least_particles);
+  EXPECT_EQ(inside(least - 1, stepped_rounds_inside), 1);
+  EXPECT_EQ(inside(least, stepped_rounds_inside), 4);
+  EXPECT_EQ(inside(least, one_thread_inside), 1);
+  const auto event_least = static_cast<std::int64_t>(event_rounds_inside.least_particles);
+  EXPECT_EQ(inside(event_least - 1, event_rounds_inside), 1);
+  EXPECT_EQ(inside(event_least, event_rounds_inside), 4);
+  // Two species count together; the replicas take their threads first.
+  scene.species.push_back(scene.species[0]);
+  scene.species[0].particles = scene.species[1].particles = least / 2;
+  EXPECT_EQ(share_threads(scene, options, stepped_rounds_inside).inside, 4);
+  scene.run.replicas = 2;
+  EXPECT_EQ(share_threads(scene, options, stepped_rounds_inside).concurrent, 2);
+  EXPECT_EQ(share_threads(scene, options, stepped_rounds_inside).inside, 2);
+  // Asked for: that many (at most what is left over), whatever the size.
+  scene.species.pop_back();
+  scene.species[0].particles = 1000;
+  options.threads_per_replica = 2;
+  EXPECT_EQ(share_threads(scene, options, stepped_rounds_inside).inside, 2);
+  options.threads_per_replica = 1;
+  scene.species[0].particles = least;
+  EXPECT_EQ(share_threads(scene, options, stepped_rounds_inside).inside, 1);
 }

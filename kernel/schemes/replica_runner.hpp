@@ -34,16 +34,40 @@ inline int own_replicas(const Scene& scene, const RunOptions& options) noexcept 
   return n > options.replica_offset ? (n - options.replica_offset + stride - 1) / stride : 0;
 }
 
-/// max_inside for a scheme whose replicas take any number of threads (the time-stepped scheme's concurrent rounds).
-inline constexpr int any_threads_inside = std::numeric_limits<int>::max();
+/// The threads a scheme's replica can take: at most `most`, and, unless RunOptions::threads_per_replica says
+/// otherwise, more than one only for a replica of at least `least_particles` particles (all species), the size
+/// from which its concurrent rounds were measured faster than one thread.
+struct ThreadsInside {
+  int most = 1;
+  std::uint64_t least_particles = 0;
+};
+/// A scheme that runs a replica on one thread.
+inline constexpr ThreadsInside one_thread_inside{};
+/// The time-stepped scheme's concurrent rounds (schemes/concurrent_rounds.hpp): on two threads 1.6x one at 10^6
+/// and 10^7 particles in every run, 0.8x to 1.8x from run to run between 2 10^5 and 4 10^5, 0.9x at 10^5
+/// (docs/developer-guide/scaling.md, "Concurrent collision rounds").
+inline constexpr ThreadsInside stepped_rounds_inside{std::numeric_limits<int>::max(), 1'000'000};
+/// The event scheme's rounds (schemes/event_rounds.hpp): 1.5x at 10^7, 1.4x at 10^6, 1.2-1.3x at 10^5; smaller
+/// replicas not measured (docs/developer-guide/scaling.md, "The event scheme's rounds").
+inline constexpr ThreadsInside event_rounds_inside{std::numeric_limits<int>::max(), 100'000};
 
-/// The threads first to replicas, one each; the threads left over to the replicas, up to `max_inside` each (1
-/// for a scheme that runs a replica on one thread).
-inline ThreadShare share_threads(const Scene& scene, const RunOptions& options, int max_inside) {
+/// The particles of one replica of the scene.
+inline std::uint64_t replica_particles(const Scene& scene) noexcept {
+  std::uint64_t n = 0;
+  for (const SpeciesConfig& s : scene.species) n += static_cast<std::uint64_t>(s.particles);
+  return n;
+}
+
+/// The threads first to replicas, one each; the threads left over to the replicas, up to `inside.most` each and
+/// up to RunOptions::threads_per_replica, or by default (0) to replicas of at least `inside.least_particles`.
+inline ThreadShare share_threads(const Scene& scene, const RunOptions& options, const ThreadsInside& inside) {
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   ThreadShare share;
   share.concurrent = std::max(1, std::min(threads, own_replicas(scene, options)));
-  share.inside = std::max(1, std::min({max_inside, options.threads_per_replica, threads / share.concurrent}));
+  const int asked = options.threads_per_replica > 0                      ? options.threads_per_replica
+                    : replica_particles(scene) >= inside.least_particles ? inside.most
+                                                                         : 1;
+  share.inside = std::max(1, std::min({inside.most, asked, threads / share.concurrent}));
   return share;
 }
 
@@ -91,7 +115,7 @@ RunResult run_replicas(const Scene& scene, const RunOptions& options, const Thre
 /// run_one(replica, times) -> ReplicaSeries, one thread per replica.
 template <class RunOne>
 RunResult run_replicas(const Scene& scene, const RunOptions& options, RunOne&& run_one) {
-  return run_replicas(scene, options, share_threads(scene, options, 1), std::forward<RunOne>(run_one));
+  return run_replicas(scene, options, share_threads(scene, options, one_thread_inside), std::forward<RunOne>(run_one));
 }
 
 }  // namespace granmc

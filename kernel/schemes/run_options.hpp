@@ -20,11 +20,11 @@ class RunInterrupted : public std::runtime_error {
 
 struct RunOptions {
   int threads = 0;  // OpenMP threads for the replicas; 0: the OpenMP default
-  // At most this many of them inside one replica, where the scheme can use them (the time-stepped scheme's
-  // concurrent collision rounds, schemes/concurrent_rounds.hpp): the same bits, faster than one thread for
-  // replicas of 10^6 and 10^7 particles on the host measured and slower for one of 10^5
-  // (docs/developer-guide/scaling.md), hence 1 unless asked for.
-  int threads_per_replica = 1;
+  // At most this many of them inside one replica, where the scheme can use them (concurrent collision rounds,
+  // schemes/concurrent_rounds.hpp and schemes/event_rounds.hpp): the same bits for any number. 0: the threads the
+  // replicas leave over go inside replicas large enough for the rounds to be faster than one thread
+  // (schemes/replica_runner.hpp, share_threads).
+  int threads_per_replica = 0;
   std::function<void()> on_sample;  // called after each observation of each replica, from any thread
   // This process runs the replicas r with r % replica_stride == replica_offset (MPI ranks,
   // docs/developer-guide/scaling.md); the others stay default-constructed in RunResult::replicas for the caller to

@@ -292,15 +292,19 @@ PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int thread
   // The run's own share (schemes/replica_runner.hpp): threads left over by the replicas go inside them where
   // the time-stepped scheme's batched stage or the event scheme runs them in concurrent rounds.
   const auto* stepped = std::get_if<SteppedPlan>(&plan.scheme);
-  const bool rounds = (stepped != nullptr && std::holds_alternative<BatchedStage>(stepped->backend)) ||
-                      std::holds_alternative<EventPlan>(plan.scheme);
+  const ThreadsInside inside = std::holds_alternative<EventPlan>(plan.scheme) ? event_rounds_inside
+                               : stepped != nullptr && std::holds_alternative<BatchedStage>(stepped->backend)
+                                   ? stepped_rounds_inside
+                                   : one_thread_inside;
+  const bool rounds = inside.most > 1;
   RunOptions options;
   options.threads = threads;
   options.threads_per_replica = threads_per_replica;
-  const ThreadShare share = share_threads(scene, options, rounds ? any_threads_inside : 1);
+  const ThreadShare share = share_threads(scene, options, inside);
   out.replicas_in_flight = share.concurrent;
   out.threads_per_replica = share.inside;
   out.threads_inside = rounds;
+  out.least_particles_inside = inside.least_particles;
   std::visit([&](const auto& scheme) { explain(scheme, scene, out); }, plan.scheme);
   return out;
 }

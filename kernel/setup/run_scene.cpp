@@ -45,7 +45,7 @@ RunResult run_dsmc(const Scene& scene, const RunOptions& options, const Kernel& 
     }
     return result;
   } else {
-    const ThreadShare share = share_threads(scene, options, any_threads_inside);
+    const ThreadShare share = share_threads(scene, options, stepped_rounds_inside);
     CollisionRoundCounts rounds;
     RunResult result =
         run_replicas(scene, options, share, [&](std::uint64_t replica, const std::vector<double>& times) {
@@ -85,7 +85,7 @@ RunResult run(const EventPlan& plan, const Scene& scene, const RunOptions& optio
   return std::visit(
       [&](const auto& kernel, auto storage) {
         using Real = typename decltype(storage)::type;
-        const ThreadShare share = share_threads(scene, options, any_threads_inside);
+        const ThreadShare share = share_threads(scene, options, event_rounds_inside);
         CollisionRoundCounts rounds;
         RunResult result =
             run_replicas(scene, options, share, [&](std::uint64_t replica, const std::vector<double>& times) {
