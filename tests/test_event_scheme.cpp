@@ -74,6 +74,39 @@ Scene example(double beta, std::int64_t particles, int replicas, const char* sto
                                 {"beta", beta}});
 }
 
+/// 001 Examples 8-9's gas: hard spheres (disks with dimension = 2) at rate 4/pi, alpha = 1/10, a Maxwellian at
+/// T = 1, heated by white noise of beta = 30 (`noise`) or free.
+Scene heated_hard_spheres(std::uint64_t seed, double t_end, int samples, std::int64_t particles, bool noise = true,
+                          int dimension = 3, int replicas = 1) {
+  constexpr std::string_view text = R"(
+    [run]
+    method = "event"
+    seed = ${seed}
+    replicas = ${replicas}
+    t_end = ${t_end}
+    samples = ${samples}
+    dimension = ${dimension}
+
+    [[species]]
+    particles = ${particles}
+
+    [collision]
+    kernel = "hard-sphere"
+    rate = ${rate}
+    restitution = 0.1
+
+    ${thermostat}
+  )";
+  return scene_from_toml(text, {{"seed", seed},
+                                {"replicas", replicas},
+                                {"t_end", t_end},
+                                {"samples", samples},
+                                {"dimension", dimension},
+                                {"particles", particles},
+                                {"rate", 16.0 / (4.0 * std::numbers::pi)},
+                                {"thermostat", noise ? "[thermostat]\nkind = \"white-noise\"\nbeta = 30.0" : ""}});
+}
+
 MeanCI at_sample(const RunResult& r, std::size_t k) {
   std::vector<double> v;
   for (const ReplicaSeries& rep : r.replicas) v.push_back(rep.temperature[k]);
@@ -366,28 +399,7 @@ TEST(EventScheme, FastParticleConservesEnergyAndGrowsTheMajorant) {
 }
 
 TEST(EventScheme, StrongHeatingOfHardSpheresStaysFiniteWithoutViolations) {
-  constexpr std::string_view text = R"(
-    # 001 Example 8's heating, alpha = 0.1
-    [run]
-    method = "event"
-    seed = 5
-    replicas = 2
-    t_end = 0.25
-    samples = 5
-
-    [[species]]
-    particles = 5000
-
-    [collision]
-    kernel = "hard-sphere"
-    rate = ${rate}
-    restitution = 0.1
-
-    [thermostat]
-    kind = "white-noise"
-    beta = 30.0
-  )";
-  const Scene s = scene_from_toml(text, {{"rate", 16.0 / (4.0 * std::numbers::pi)}});
+  const Scene s = heated_hard_spheres(5, 0.25, 5, 5000, true, 3, 2);  // 001 Example 8's heating
   const RunResult r = run_scene(s, {});
   for (const ReplicaSeries& rep : r.replicas) {
     EXPECT_EQ(rep.majorant_violations, 0u);
@@ -479,33 +491,7 @@ template <class Real>
 void expect_registers_match_one_by_one_for_each_kernel() {
   for (const std::int64_t n : {64, 3000}) {  // with 64 particles a register's pairs often share one
     for (const bool fast : {false, true}) {
-      constexpr std::string_view text = R"(
-        # 001 Examples 8-9's heating
-        [run]
-        method = "event"
-        seed = 5
-        t_end = ${t_end}
-        samples = 4
-        dimension = ${dimension}
-
-        [[species]]
-        particles = ${particles}
-
-        [collision]
-        kernel = "hard-sphere"
-        rate = ${rate}
-        restitution = 0.1
-
-        [thermostat]
-        kind = "white-noise"
-        beta = 30.0
-      )";
-      auto scene = [&](int dimension) {
-        return scene_from_toml(text, {{"t_end", n == 64 ? 2.0 : 0.1},
-                                      {"particles", n},
-                                      {"rate", 16.0 / (4.0 * std::numbers::pi)},
-                                      {"dimension", dimension}});
-      };
+      auto scene = [&](int dimension) { return heated_hard_spheres(5, n == 64 ? 2.0 : 0.1, 4, n, true, dimension); };
       SCOPED_TRACE("n = " + std::to_string(n) + (fast ? ", a fast particle" : ""));
       const Scene spheres = scene(3), disks = scene(2);
       expect_registers_match_one_by_one<Real>(spheres, HardSphere{}, fast);
@@ -553,26 +539,9 @@ void expect_snapshot_goes_on_alike(const Scene& s, Kernel kernel) {
 
 template <class Real>
 void expect_snapshots_go_on_alike() {
-  for (const char* thermostat : {"[thermostat]\nkind = \"white-noise\"\nbeta = 30.0", ""}) {
-    constexpr std::string_view text = R"(
-      [run]
-      method = "event"
-      seed = 11
-      t_end = 0.5
-      samples = 5
-
-      [[species]]
-      particles = 3000
-
-      [collision]
-      kernel = "hard-sphere"
-      rate = 1.2732395447351628
-      restitution = 0.1
-
-      ${thermostat}
-    )";
-    const Scene s = scene_from_toml(text, {{"thermostat", thermostat}});
-    SCOPED_TRACE(*thermostat != 0 ? "white noise" : "no noise");
+  for (const bool noise : {true, false}) {
+    const Scene s = heated_hard_spheres(11, 0.5, 5, 3000, noise);
+    SCOPED_TRACE(noise ? "white noise" : "no noise");
     expect_snapshot_goes_on_alike<Real>(s, HardSphere{});
     expect_snapshot_goes_on_alike<Real>(s, VariableHardSpheres{0.5});
     expect_snapshot_goes_on_alike<Real>(s, MaxwellPseudomolecules{});
@@ -611,29 +580,7 @@ void expect_rounds_match_one_thread(const Scene& s, Kernel kernel, int threads) 
 template <class Real>
 void expect_rounds_match_one_thread_for_each_kernel() {
   for (const bool noise : {true, false}) {
-    constexpr std::string_view text = R"(
-      [run]
-      method = "event"
-      seed = 13
-      t_end = ${t_end}
-      samples = 3
-      dimension = ${dimension}
-
-      [[species]]
-      particles = 20000
-
-      [collision]
-      kernel = "hard-sphere"
-      rate = 1.2732395447351628
-      restitution = 0.1
-
-      ${thermostat}
-    )";
-    auto scene = [&](int dimension) {
-      return scene_from_toml(text, {{"t_end", noise ? 0.5 : 2.0},
-                                    {"dimension", dimension},
-                                    {"thermostat", noise ? "[thermostat]\nkind = \"white-noise\"\nbeta = 30.0" : ""}});
-    };
+    auto scene = [&](int dimension) { return heated_hard_spheres(13, noise ? 0.5 : 2.0, 3, 20000, noise, dimension); };
     const Scene spheres = scene(3), disks = scene(2);
     for (const int threads : {2, 4}) {
       SCOPED_TRACE(std::string(noise ? "white noise" : "no noise") + ", " + std::to_string(threads) + " threads");
