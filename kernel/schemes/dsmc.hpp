@@ -78,7 +78,7 @@ class BasicDsmc {
   BasicDsmc(const Scene& scene, std::uint64_t replica, const Ranks& ranks, Effects... effects)
       : BasicDsmc(scene, replica, Backend(scene, ranks), Kernel::from_scene(scene), effects...) {}
 
-  /// The backend and the kernel given (the run plan's, setup/run_scene.cpp).
+  /// The backend and the kernel given (the run plan's, setup/run_stepped.hpp).
   BasicDsmc(const Scene& scene, std::uint64_t replica, Backend backend, Kernel kernel, Effects... effects)
       : scene_(scene),
         rng_(scene.run.seed, replica),

@@ -112,10 +112,4 @@ RunResult run_replicas(const Scene& scene, const RunOptions& options, const Thre
   return result;
 }
 
-/// run_one(replica, times) -> ReplicaSeries, one thread per replica.
-template <class RunOne>
-RunResult run_replicas(const Scene& scene, const RunOptions& options, RunOne&& run_one) {
-  return run_replicas(scene, options, share_threads(scene, options, one_thread_inside), std::forward<RunOne>(run_one));
-}
-
 }  // namespace granmc

@@ -10,6 +10,7 @@
 #include "kernel/collide/pair_coefficients.hpp"
 #include "kernel/core/species_store.hpp"
 #include "kernel/schemes/replica_runner.hpp"
+#include "kernel/setup/run_scene.hpp"
 #include "kernel/theory/intruder.hpp"
 #include "kernel/theory/scene_theory.hpp"
 #include "kernel/theory/white_noise.hpp"
@@ -289,21 +290,15 @@ std::string instantiation_name(const RunPlan& plan, const Scene& scene) {
 PlanExplanation explain_plan(const RunPlan& plan, const Scene& scene, int threads, int threads_per_replica) {
   PlanExplanation out;
   out.instantiation = instantiation_name(plan, scene);
-  // The run's own share (schemes/replica_runner.hpp): threads left over by the replicas go inside them where
-  // the time-stepped scheme's batched stage or the event scheme runs them in concurrent rounds.
-  const auto* stepped = std::get_if<SteppedPlan>(&plan.scheme);
-  const ThreadsInside inside = std::holds_alternative<EventPlan>(plan.scheme) ? event_rounds_inside
-                               : stepped != nullptr && std::holds_alternative<BatchedStage>(stepped->backend)
-                                   ? stepped_rounds_inside
-                                   : one_thread_inside;
-  const bool rounds = inside.most > 1;
+  // The run's own share (run_plan).
+  const ThreadsInside inside = threads_inside(plan);
   RunOptions options;
   options.threads = threads;
   options.threads_per_replica = threads_per_replica;
   const ThreadShare share = share_threads(scene, options, inside);
   out.replicas_in_flight = share.concurrent;
   out.threads_per_replica = share.inside;
-  out.threads_inside = rounds;
+  out.threads_inside = inside.most > 1;
   out.least_particles_inside = inside.least_particles;
   std::visit([&](const auto& scheme) { explain(scheme, scene, out); }, plan.scheme);
   return out;
