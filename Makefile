@@ -180,8 +180,8 @@ tails-disks-weighted: build
 	  drivers/scenes/tails_disks_weighted/vhs.toml drivers/scenes/tails_disks_weighted/hcs_hard_disks.toml
 
 # The habits CI holds the tree to (docs/developer-guide/architecture.md, "Rules"): the lint (clang-format,
-# pyflakes), the suite (built with warnings as errors) at 2 OpenMP threads and again at 4 (its unit and cli tests
-# at 1), the fast tests under the address and undefined-behaviour sanitizers, the SIMD tests for plain x86-64,
+# pyflakes), the suite (built with warnings as errors) at 2 OpenMP threads, its unit and cli tests again at 1 and
+# 4, the fast tests under the address and undefined-behaviour sanitizers, the SIMD tests for plain x86-64,
 # then the MPI test in $(MPI_BUILD) (replicas over ranks against one process, docs/developer-guide/scaling.md;
 # installs OpenMPI if missing and builds only granmc and test_mpi there).
 test: build
@@ -209,12 +209,12 @@ format: setup
 output-format-page: build
 	$(GRANMC) output-format > docs/formats/output-format.md
 
-# The suite again at 4 OpenMP threads (more threads than cores: replicas over threads and threads inside a
-# replica), and its unit and cli tests at 1. Results do not depend on the count (test_threads and test_cli compare
-# the bits directly), so the validation tests at 1 thread would repeat the numbers of the 2-thread run.
+# The unit and cli tests again at 1 and 4 OpenMP threads (4: more threads than cores, replicas over threads and
+# threads inside a replica). Results do not depend on the count, and test_threads, test_cli and test_checkpoint compare
+# the bits of runs on different counts directly, so the validation tests would repeat the 2-thread run's numbers.
 thread-test: build
 	OMP_NUM_THREADS=1 ctest --test-dir $(BUILD) --output-on-failure -L 'unit|cli'
-	OMP_NUM_THREADS=4 ctest --test-dir $(BUILD) --output-on-failure
+	OMP_NUM_THREADS=4 ctest --test-dir $(BUILD) --output-on-failure -L 'unit|cli'
 
 # The fast tests (labels unit and cli, not heavy: the target fast_tests, tests/CMakeLists.txt) built with
 # AddressSanitizer and UndefinedBehaviorSanitizer in $(SANITIZE_BUILD), at -O1 (about a third less compile time
