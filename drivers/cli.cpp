@@ -145,13 +145,20 @@ int explain_command(const Scene& full_scene, const RunPlan& plan, const RunArgs&
   else
     std::printf("threads      %d replicas at a time, one thread each\n", what.replicas_in_flight);
   // Threads inside a replica shorten it by a factor that depends on its size and the machine
-  // (docs/developer-guide/scaling.md): not counted.
+  // (docs/developer-guide/scaling.md): the time is the replicas' on one thread each, and says so.
   const double rate = measured_candidates_per_second(what.rate_class);
   const double seconds = what.candidates / (rate * what.replicas_in_flight);
-  std::printf(
-      "work         %s%.3g candidate pairs, about %.0f s on %d threads at %.2g candidates/s per thread (%s, "
-      "drivers/explain_rates.toml)\n",
-      what.candidates_upper_bound ? "at most " : "", what.candidates, seconds, threads, rate, what.rate_class.c_str());
+  std::printf("work         %s%.3g candidate pairs, about %.0f s ", what.candidates_upper_bound ? "at most " : "",
+              what.candidates, seconds);
+  if (what.threads_per_replica > 1)
+    std::printf(
+        "with one thread per replica at %.2g candidates/s per thread (%s, drivers/explain_rates.toml); the %d "
+        "threads inside each replica shorten that by a factor that depends on its size and the machine "
+        "(docs/developer-guide/scaling.md)\n",
+        rate, what.rate_class.c_str(), what.threads_per_replica);
+  else
+    std::printf("on %d threads at %.2g candidates/s per thread (%s, drivers/explain_rates.toml)\n", threads, rate,
+                what.rate_class.c_str());
   return exit_ok;
 }
 

@@ -254,6 +254,13 @@ TEST_F(Cli, ExplainPrintsThePlanAndRunsNothing) {
       << o.stdout_text;
   EXPECT_NE(granmc("run heated.toml --explain --no-checkpoints").stdout_text.find("checkpoints  none"),
             std::string::npos);
+  // Threads inside a replica: the time estimate is that of one thread per replica, and says so.
+  write("one.toml", with("replicas = 2", "replicas = 1"));
+  const Outcome inside = granmc("run one.toml --explain --threads 2 --threads-per-replica 2");
+  EXPECT_NE(inside.stdout_text.find("1 replica(s) at a time, each on 2 threads"), std::string::npos)
+      << inside.stdout_text;
+  EXPECT_NE(inside.stdout_text.find("with one thread per replica"), std::string::npos) << inside.stdout_text;
+  EXPECT_NE(granmc("run one.toml --explain --threads 1").stdout_text.find(" s on 1 threads at "), std::string::npos);
   EXPECT_TRUE(outputs().empty());
 }
 
